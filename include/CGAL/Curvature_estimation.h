@@ -1,0 +1,10 @@
+// Umbrella header of the curvature estimation package.
+#ifndef CGAL_CURVATURE_ESTIMATION_H
+#define CGAL_CURVATURE_ESTIMATION_H
+
+#include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
+#include <CGAL/Curvature_estimation/parameters.h>
+#include <CGAL/Curvature_estimation/paraboloid_fitting.h>
+#include <CGAL/Curvature_estimation/vertex_normals.h>
+
+#endif // CGAL_CURVATURE_ESTIMATION_H

@@ -1,0 +1,71 @@
+// Output value types shared by every estimator of the package.
+#ifndef CGAL_CURVATURE_ESTIMATION_PRINCIPAL_CURVATURES_AND_DIRECTIONS_H
+#define CGAL_CURVATURE_ESTIMATION_PRINCIPAL_CURVATURES_AND_DIRECTIONS_H
+
+#include <ostream>
+
+namespace CGAL {
+namespace Curvature_estimation {
+
+/// \ingroup PkgCurvatureEstimationRef
+/// Principal curvatures and principal directions at a vertex of a surface in R^3,
+/// with the field names of CGAL 6's `Polygon_mesh_processing::Principal_curvatures_and_directions`.
+///
+/// Conventions: `max_curvature >= min_curvature`; the directions are unit tangent
+/// vectors, orthogonal to each other and to the normal. With outward normals a sphere
+/// of radius r has `max_curvature == min_curvature == 1/r`.
+/// At a vertex whose status is `Estimation_status::not_estimable`, every field is NaN.
+///
+/// \tparam GT a geometric traits class providing `FT` and `Vector_3`.
+template <typename GT>
+struct Principal_curvatures_and_directions
+{
+  using FT = typename GT::FT;
+  using Vector_3 = typename GT::Vector_3;
+
+  FT min_curvature;
+  FT max_curvature;
+  Vector_3 min_direction;
+  Vector_3 max_direction;
+
+  Principal_curvatures_and_directions()
+    : min_curvature(0), max_curvature(0), min_direction(0, 0, 0), max_direction(0, 0, 0)
+  {}
+
+  Principal_curvatures_and_directions(FT min_curvature, FT max_curvature,
+                                      const Vector_3& min_direction, const Vector_3& max_direction)
+    : min_curvature(min_curvature), max_curvature(max_curvature),
+      min_direction(min_direction), max_direction(max_direction)
+  {}
+};
+
+/// \ingroup PkgCurvatureEstimationRef
+/// The outcome of an estimation at one vertex, written to the map given as
+/// `vertex_estimation_status_map`.
+enum class Estimation_status : unsigned char
+{
+  ok,            ///< estimated from the neighbourhood asked for (by default the 1-ring)
+  widened,       ///< estimated from a neighbourhood wider than the 1-ring, because the 1-ring
+                 ///< was too small or ill-conditioned (or because wider rings were asked for)
+  not_estimable  ///< no estimate: isolated vertex, degenerate neighbourhood, invalid input; values are NaN
+};
+
+/// The name of a status as the command-line tool writes it: `ok`, `widened`, `failed`.
+inline const char* to_string(Estimation_status status)
+{
+  switch (status) {
+    case Estimation_status::ok: return "ok";
+    case Estimation_status::widened: return "widened";
+    default: return "failed";
+  }
+}
+
+inline std::ostream& operator<<(std::ostream& os, Estimation_status status)
+{
+  return os << to_string(status);
+}
+
+} // namespace Curvature_estimation
+} // namespace CGAL
+
+#endif // CGAL_CURVATURE_ESTIMATION_PRINCIPAL_CURVATURES_AND_DIRECTIONS_H

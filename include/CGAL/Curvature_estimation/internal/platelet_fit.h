@@ -1,0 +1,211 @@
+// Hamann's platelet fit at one vertex of a FaceGraph: gather the k-ring, express
+// it in a tangent frame, fit the paraboloid, widen while ill-conditioned.
+#ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_PLATELET_FIT_H
+#define CGAL_CURVATURE_ESTIMATION_INTERNAL_PLATELET_FIT_H
+
+#include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
+#include <CGAL/Curvature_estimation/internal/neighborhood.h>
+#include <CGAL/Curvature_estimation/internal/quadric_fit.h>
+#include <CGAL/Curvature_estimation/internal/shape_operator.h>
+#include <CGAL/Curvature_estimation/internal/tangent_frame.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/number_utils.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Curvature_estimation {
+namespace internal {
+
+struct Platelet_fit_settings
+{
+  int rings = 1;            // rings an interior vertex starts with
+  int boundary_rings = 1;   // rings a boundary vertex starts with
+  int max_rings = 3;        // widening stops here
+  double max_condition = 1e3;
+};
+
+struct Surface_estimate
+{
+  Estimation_status status = Estimation_status::not_estimable;
+  double max_curvature = std::numeric_limits<double>::quiet_NaN();
+  double min_curvature = std::numeric_limits<double>::quiet_NaN();
+  Eigen::Vector3d max_direction = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  Eigen::Vector3d min_direction = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  Eigen::Vector3d normal = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+};
+
+template <typename FaceGraph, typename VertexPointMap>
+class Platelet_fitter
+{
+public:
+  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
+
+  Platelet_fitter(const FaceGraph& g, VertexPointMap vpm, const Platelet_fit_settings& settings)
+    : g_(&g), vpm_(vpm), settings_(settings)
+  {}
+
+  // Hamann's fit: the paraboloid through the k-ring in the tangent frame of the
+  // unit `normal`, widened while ill-conditioned.
+  Surface_estimate fit(vertex_descriptor v, const Eigen::Vector3d& normal)
+  {
+    if (!gather(v))
+      return Surface_estimate();
+    return fit_curvature(normal);
+  }
+
+  // The same, in the frame of a second-order normal fitted from the unit
+  // `initial_normal` (see fit_normal).
+  Surface_estimate fit_with_fitted_normal(vertex_descriptor v, const Eigen::Vector3d& initial_normal)
+  {
+    Eigen::Vector3d normal = initial_normal;
+    if (!gather(v) || !fit_normal(normal))
+      return Surface_estimate();
+    return fit_curvature(normal);
+  }
+
+  // A second-order normal: `normal` (unit, on input a first-order estimate such
+  // as a face average) corrected by the gradient of a Taylor fit in its frame.
+  // A symmetric interior stencil cancels the odd terms, so the degree-2 fit over
+  // the starting rings suffices there; a one-sided boundary stencil does not, so
+  // a boundary vertex fits the cubic terms too, over at least two rings, and
+  // falls back to degree 2 where that is ill-conditioned up to the widest ring.
+  bool fitted_normal(vertex_descriptor v, Eigen::Vector3d& normal)
+  {
+    return gather(v) && fit_normal(normal);
+  }
+
+private:
+  static Eigen::Vector3d to_eigen(const typename boost::property_traits<VertexPointMap>::reference p)
+  {
+    return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+
+  // The starting rings, and the local length scale (mean distance to the
+  // 1-ring) that makes the fit scale invariant.
+  bool gather(vertex_descriptor v)
+  {
+    center_ = to_eigen(get(vpm_, v));
+    if (!center_.allFinite())
+      return false;
+    rings_.start(v, *g_);
+    offsets_.clear();
+    offsets_.push_back(Eigen::Vector3d::Zero());
+    double length_sum = 0;
+    int length_count = 0;
+    for (std::size_t i = 1; i < rings_.ring_end(1); ++i) {
+      const Eigen::Vector3d offset = to_eigen(get(vpm_, rings_.vertices()[i])) - center_;
+      offsets_.push_back(offset);
+      const double length = offset.norm();
+      if (std::isfinite(length)) {
+        length_sum += length;
+        ++length_count;
+      }
+    }
+    if (length_count == 0 || !(length_sum > 0))
+      return false;
+    scale_ = length_sum / length_count;
+    for (Eigen::Vector3d& offset : offsets_)
+      offset /= scale_;
+
+    on_border_ = static_cast<bool>(is_border(v, *g_));
+    return true;
+  }
+
+  int start_rings() const { return on_border_ ? settings_.boundary_rings : settings_.rings; }
+
+  // Gathers rings up to `rings`; false when the component has fewer.
+  bool reach(int rings)
+  {
+    while (rings_.rings() < rings) {
+      if (!rings_.extend(*g_))
+        return false;
+      for (std::size_t i = offsets_.size(); i < rings_.vertices().size(); ++i)
+        offsets_.push_back((to_eigen(get(vpm_, rings_.vertices()[i])) - center_) / scale_);
+    }
+    return true;
+  }
+
+  // Fits over the first rings, from `rings` on, widening until the normal
+  // equations are well-conditioned; returns the rings used, 0 on failure.
+  template <typename Fit>
+  int fit_widening(const Eigen::Vector3d& normal, int rings, Fit& fit)
+  {
+    for (; rings <= settings_.max_rings && reach(rings); ++rings)
+      if (fit_in_frame(normal, rings, fit))
+        return rings;
+    return 0;
+  }
+
+  template <typename Fit>
+  bool correct_normal(Eigen::Vector3d& normal, int rings)
+  {
+    Fit fit;
+    if (fit_widening(normal, rings, fit) == 0)
+      return false;
+    const Eigen::Vector3d corrected = normal - tangent_basis<3>(normal) * fit.gradient();
+    normal = corrected.normalized();
+    return normal.allFinite();
+  }
+
+  bool fit_normal(Eigen::Vector3d& normal)
+  {
+    if (on_border_ && correct_normal<Taylor_fit<2, 1, 3>>(normal, (std::max)(2, start_rings())))
+      return true;
+    return correct_normal<Taylor_fit<2, 1, 2>>(normal, start_rings());
+  }
+
+  Surface_estimate fit_curvature(const Eigen::Vector3d& normal)
+  {
+    Surface_estimate result;
+    Taylor_fit<2, 2, 2> fit;
+    const int rings = fit_widening(normal, start_rings(), fit);
+    if (rings == 0)
+      return result;
+    const Graph_curvature<3> curvature =
+      graph_curvature<3>(fit.hessian(), fit.gradient(), tangent_basis<3>(normal), normal);
+    if (!curvature.curvatures.allFinite() || !curvature.directions.allFinite())
+      return result;
+    result.status = rings > 1 ? Estimation_status::widened : Estimation_status::ok;
+    result.max_curvature = curvature.curvatures[0] / scale_;
+    result.min_curvature = curvature.curvatures[1] / scale_;
+    result.max_direction = curvature.directions.col(0);
+    result.min_direction = curvature.directions.col(1);
+    result.normal = normal;
+    return result;
+  }
+
+  template <typename Fit>
+  bool fit_in_frame(const Eigen::Vector3d& normal, int rings, Fit& fit) const
+  {
+    const Eigen::Matrix<double, 3, 2> tangents = tangent_basis<3>(normal);
+    fit.clear();
+    for (std::size_t i = 1; i < rings_.ring_end(rings); ++i) {
+      const Eigen::Vector3d& q = offsets_[i];
+      if (q.allFinite())
+        fit.add(tangents.transpose() * q, normal.dot(q));
+    }
+    return fit.solve(settings_.max_condition);
+  }
+
+  const FaceGraph* g_;
+  VertexPointMap vpm_;
+  Platelet_fit_settings settings_;
+  Ring_collector<FaceGraph> rings_;
+  std::vector<Eigen::Vector3d> offsets_;  // scaled p_w - p_v, aligned with rings_.vertices()
+  Eigen::Vector3d center_;
+  double scale_ = 1;
+  bool on_border_ = false;
+};
+
+} // namespace internal
+} // namespace Curvature_estimation
+} // namespace CGAL
+
+#endif // CGAL_CURVATURE_ESTIMATION_INTERNAL_PLATELET_FIT_H

@@ -1,0 +1,127 @@
+// Least-squares Taylor fit of a height function over a tangent space, the
+// numerical core shared by the surface (D = 2) and hypersurface (D = 3)
+// estimators:
+//
+//   h(x) = [g . x] + 1/2 x^T C x [+ cubic terms],   x in R^D,   C symmetric,
+//
+// the terms of orders FirstOrder..LastOrder (FirstOrder 1 or 2, LastOrder 2 or 3).
+// FirstOrder = 2 trusts the frame's normal (Hamann's fit); FirstOrder = 1 fits
+// the gradient, i.e. corrects the normal; LastOrder = 3 takes the cubic part out
+// of the gradient, which a one-sided (boundary) stencil does not cancel.
+#ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_QUADRIC_FIT_H
+#define CGAL_CURVATURE_ESTIMATION_INTERNAL_QUADRIC_FIT_H
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+#include <limits>
+
+namespace CGAL {
+namespace Curvature_estimation {
+namespace internal {
+
+constexpr int number_of_monomials(int D, int order)
+{
+  // (D + order - 1) choose order, for D <= 3 and order <= 3
+  return order == 1 ? D : order == 2 ? D * (D + 1) / 2 : D * (D + 1) * (D + 2) / 6;
+}
+
+template <int D, int FirstOrder, int LastOrder>
+class Taylor_fit
+{
+  static_assert(FirstOrder >= 1 && FirstOrder <= 2 && LastOrder >= 2 && LastOrder <= 3, "orders out of range");
+
+public:
+  static constexpr int unknowns = (FirstOrder == 1 ? number_of_monomials(D, 1) : 0) + number_of_monomials(D, 2) +
+                                  (LastOrder == 3 ? number_of_monomials(D, 3) : 0);
+
+  using Point = Eigen::Matrix<double, D, 1>;
+  using Hessian = Eigen::Matrix<double, D, D>;
+  using Row = Eigen::Matrix<double, unknowns, 1>;
+  using Normal_matrix = Eigen::Matrix<double, unknowns, unknowns>;
+
+  Taylor_fit() { clear(); }
+
+  void clear()
+  {
+    normal_matrix_.setZero();
+    right_hand_side_.setZero();
+    size_ = 0;
+  }
+
+  // One sample: a point of the tangent space and the height above it.
+  void add(const Point& x, double height)
+  {
+    Row row;
+    int column = 0;
+    // Quadratic terms first so that their coefficients do not depend on FirstOrder.
+    for (int i = 0; i < D; ++i)
+      for (int j = i; j < D; ++j)
+        row[column++] = (i == j ? 0.5 : 1.0) * x[i] * x[j];
+    if constexpr (FirstOrder == 1)
+      for (int i = 0; i < D; ++i)
+        row[column++] = x[i];
+    if constexpr (LastOrder == 3)
+      for (int i = 0; i < D; ++i)
+        for (int j = i; j < D; ++j)
+          for (int k = j; k < D; ++k)
+            row[column++] = x[i] * x[j] * x[k];
+    normal_matrix_.noalias() += row * row.transpose();
+    right_hand_side_.noalias() += height * row;
+    ++size_;
+  }
+
+  int size() const { return size_; }
+
+  // Solves the normal equations. Returns false when there are fewer samples than
+  // unknowns, when the normal matrix is singular, or when its condition number
+  // (1-norm, exact for this small matrix) exceeds `max_condition`: a stencil that
+  // is singular in the tangent space can still be solvable in floating point once
+  // tilted, and its solution is then garbage.
+  bool solve(double max_condition)
+  {
+    condition_ = std::numeric_limits<double>::infinity();
+    if (size_ < unknowns)
+      return false;
+    const Eigen::LLT<Normal_matrix> cholesky(normal_matrix_);
+    if (cholesky.info() != Eigen::Success)
+      return false;
+    const Normal_matrix inverse = cholesky.solve(Normal_matrix::Identity());
+    condition_ = normal_matrix_.cwiseAbs().colwise().sum().maxCoeff() *
+                 inverse.cwiseAbs().colwise().sum().maxCoeff();
+    if (!(condition_ <= max_condition))
+      return false;
+
+    const Row coefficients = inverse * right_hand_side_;
+    int column = 0;
+    for (int i = 0; i < D; ++i)
+      for (int j = i; j < D; ++j) {
+        hessian_(i, j) = coefficients[column];
+        hessian_(j, i) = coefficients[column];
+        ++column;
+      }
+    if constexpr (FirstOrder == 1)
+      gradient_ = coefficients.template segment<D>(column);
+    else
+      gradient_.setZero();
+    return true;
+  }
+
+  double condition_number() const { return condition_; }
+  const Hessian& hessian() const { return hessian_; }
+  const Point& gradient() const { return gradient_; }
+
+private:
+  Normal_matrix normal_matrix_;
+  Row right_hand_side_;
+  int size_ = 0;
+  double condition_ = std::numeric_limits<double>::infinity();
+  Hessian hessian_ = Hessian::Zero();
+  Point gradient_ = Point::Zero();
+};
+
+} // namespace internal
+} // namespace Curvature_estimation
+} // namespace CGAL
+
+#endif // CGAL_CURVATURE_ESTIMATION_INTERNAL_QUADRIC_FIT_H

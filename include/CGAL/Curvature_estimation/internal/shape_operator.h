@@ -1,0 +1,67 @@
+// Principal curvatures and directions of the graph of a height function over a
+// tangent frame, at the frame's origin.
+#ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_SHAPE_OPERATOR_H
+#define CGAL_CURVATURE_ESTIMATION_INTERNAL_SHAPE_OPERATOR_H
+
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
+
+namespace CGAL {
+namespace Curvature_estimation {
+namespace internal {
+
+// Curvatures in the package's convention (positive where the surface bends away
+// from the normal, so a sphere with outward normals has 1/r), sorted in
+// decreasing order; directions are unit tangent vectors of R^N, column i for
+// curvature i; `normal` is the graph's normal at the origin.
+template <int N>
+struct Graph_curvature
+{
+  static constexpr int D = N - 1;
+  Eigen::Matrix<double, D, 1> curvatures;
+  Eigen::Matrix<double, N, D> directions;
+  Eigen::Matrix<double, N, 1> normal;
+};
+
+// The graph of h(x) = g.x + 1/2 x^T C x over the frame (origin, columns of
+// `tangents`, `normal`): first fundamental form G = I + g g^T, second C / l with
+// l = sqrt(1 + |g|^2); the shape operator G^-1 C / l is diagonalised in the
+// symmetric form G^-1/2 C G^-1/2 / l, whose eigenvectors w give parameter
+// directions G^-1/2 w that are unit in the metric G.
+template <int N>
+Graph_curvature<N> graph_curvature(const Eigen::Matrix<double, N - 1, N - 1>& hessian,
+                                   const Eigen::Matrix<double, N - 1, 1>& gradient,
+                                   const Eigen::Matrix<double, N, N - 1>& tangents,
+                                   const Eigen::Matrix<double, N, 1>& normal)
+{
+  constexpr int D = N - 1;
+  using Square = Eigen::Matrix<double, D, D>;
+
+  const double gradient_norm2 = gradient.squaredNorm();
+  const double l = std::sqrt(1.0 + gradient_norm2);
+  Square inverse_sqrt_metric = Square::Identity();
+  if (gradient_norm2 > 0)
+    inverse_sqrt_metric += ((1.0 / l - 1.0) / gradient_norm2) * (gradient * gradient.transpose());
+
+  const Square symmetric = inverse_sqrt_metric * hessian * inverse_sqrt_metric / l;
+  Eigen::SelfAdjointEigenSolver<Square> eigen;
+  eigen.computeDirect(symmetric);
+
+  Graph_curvature<N> result;
+  // Ascending eigenvalues of the upward shape operator are, negated, the
+  // curvatures in decreasing order.
+  result.curvatures = -eigen.eigenvalues();
+  const Square parameter_directions = inverse_sqrt_metric * eigen.eigenvectors();
+  result.directions = tangents * parameter_directions +
+                      normal * (gradient.transpose() * parameter_directions);
+  result.normal = (normal - tangents * gradient) / l;
+  return result;
+}
+
+} // namespace internal
+} // namespace Curvature_estimation
+} // namespace CGAL
+
+#endif // CGAL_CURVATURE_ESTIMATION_INTERNAL_SHAPE_OPERATOR_H

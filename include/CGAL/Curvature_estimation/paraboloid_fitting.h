@@ -1,0 +1,250 @@
+// Hamann's paraboloid fitting over the vertex platelet, on any FaceGraph.
+#ifndef CGAL_CURVATURE_ESTIMATION_PARABOLOID_FITTING_H
+#define CGAL_CURVATURE_ESTIMATION_PARABOLOID_FITTING_H
+
+#include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
+#include <CGAL/Curvature_estimation/parameters.h>
+#include <CGAL/Curvature_estimation/vertex_normals.h>
+#include <CGAL/Curvature_estimation/internal/for_each_vertex.h>
+#include <CGAL/Curvature_estimation/internal/platelet_fit.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <stdexcept>
+#include <type_traits>
+
+namespace CGAL {
+namespace Curvature_estimation {
+
+/// \ingroup PkgCurvatureEstimationRef
+///
+/// Estimates principal curvatures and directions, mean and Gaussian curvature at
+/// every vertex of a surface mesh by Hamann's method (Hamann 1993): the vertex's
+/// platelet (its 1-ring) is expressed in the tangent frame of the vertex normal,
+/// the osculating paraboloid d = 1/2 (c20 u^2 + 2 c11 uv + c02 v^2) is fitted to
+/// it by least squares, and the curvatures are those of the paraboloid at the
+/// vertex.
+///
+/// **Normals.** With a `vertex_normal_map` the given normals are trusted, as in
+/// the paper. Without one, the default `Vertex_normal_method::quadric_fit` fits
+/// the paraboloid with linear terms in the frame of the area-weighted normal,
+/// corrects the normal by the fitted gradient and fits again in the corrected
+/// frame: the normal is then second order also at boundary vertices, where a
+/// face average tilts by O(h) and, divided by the one-sided platelet's size,
+/// gives an O(1) curvature error. `area_weighted`, `angle_weighted` and
+/// `centroid_weighted` use that face average as is (the paper's method with
+/// approximated normals).
+///
+/// **Widening.** A vertex whose normal equations are ill-conditioned (condition
+/// number above `max_condition_number`, which includes singular ones and
+/// stencils with fewer points than unknowns) is fitted again over one more ring,
+/// up to `max_neighborhood_rings` rings; beyond that it is not estimable.
+/// Conditioning, not a vanishing determinant, is the test: a stencil singular
+/// in the parameter plane is still solvable in floating point once tilted, and
+/// its solution is garbage.
+///
+/// **Conventions.** Curvatures are positive where the surface bends away from the
+/// normal (a sphere with outward normals has `max_curvature == min_curvature == 1/r`),
+/// `max_curvature >= min_curvature`, H is their mean, K their product. The fit is
+/// made in coordinates scaled by the mean 1-ring edge length, so scaling the mesh
+/// by s scales the curvatures by 1/s, to rounding. A vertex that cannot be
+/// estimated (isolated, all neighbours coincident, non-finite coordinates,
+/// ill-conditioned up to the widest ring) gets NaN in every output.
+///
+/// Only the outputs whose maps are passed are written; passing none does nothing.
+///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (default), `CGAL::Parallel_tag` or
+///         `CGAL::Parallel_if_available_tag`. Sequential and parallel runs give
+///         identical results. In parallel the vertex point map is read from several
+///         threads; every other map is read and written by the calling thread only.
+/// \tparam FaceGraph a model of `FaceGraph` (faces may be any polygons).
+/// \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+///
+/// \param g the mesh
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `g`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
+///                    as key type and `%Point_3` as value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, g)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class}
+///     \cgalParamType{a class model of `Kernel`}
+///     \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_normal_map}
+///     \cgalParamDescription{normals at the vertices, trusted as given (they need not be unit)}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
+///                    as key type and `GT::Vector_3` as value type}
+///     \cgalParamDefault{normals estimated by `vertex_normal_method`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_normal_method}
+///     \cgalParamDescription{how normals are estimated when no `vertex_normal_map` is given}
+///     \cgalParamType{`CGAL::Curvature_estimation::Vertex_normal_method`}
+///     \cgalParamDefault{`Vertex_normal_method::quadric_fit`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{neighborhood_rings}
+///     \cgalParamDescription{number of rings an interior vertex's fit starts with (1: Hamann's platelet)}
+///     \cgalParamType{`int`, at least 1}
+///     \cgalParamDefault{`1`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{boundary_neighborhood_rings}
+///     \cgalParamDescription{number of rings a boundary vertex's fit starts with (Hamann's tables use 2)}
+///     \cgalParamType{`int`, at least 1}
+///     \cgalParamDefault{the value of `neighborhood_rings`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{max_neighborhood_rings}
+///     \cgalParamDescription{the widest neighbourhood an ill-conditioned fit is widened to}
+///     \cgalParamType{`int`, at least the two values above}
+///     \cgalParamDefault{`3`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{max_condition_number}
+///     \cgalParamDescription{normal equations whose 1-norm condition number (in coordinates scaled by
+///                           the mean 1-ring edge length) exceeds this value are widened}
+///     \cgalParamType{`double`, greater than 1}
+///     \cgalParamDefault{`1e3`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_principal_curvatures_and_directions_map}
+///     \cgalParamDescription{output: principal curvatures and directions}
+///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
+///                    as key type and `Principal_curvatures_and_directions<GT>` as value type}
+///     \cgalParamDefault{not computed}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_mean_curvature_map}
+///     \cgalParamDescription{output: mean curvature H = (k1 + k2) / 2}
+///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
+///                    as key type and `GT::FT` as value type}
+///     \cgalParamDefault{not computed}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_Gaussian_curvature_map}
+///     \cgalParamDescription{output: Gaussian curvature K = k1 k2}
+///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
+///                    as key type and `GT::FT` as value type}
+///     \cgalParamDefault{not computed}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_estimation_status_map}
+///     \cgalParamDescription{output: the outcome at each vertex}
+///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
+///                    as key type and `CGAL::Curvature_estimation::Estimation_status` as value type}
+///     \cgalParamDefault{not computed}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \throws std::invalid_argument if a parameter is out of its range.
+template <typename ConcurrencyTag = CGAL::Sequential_tag,
+          typename FaceGraph,
+          typename NamedParameters = parameters::Default_named_parameters>
+void paraboloid_fitting_curvatures(const FaceGraph& g,
+                                   const NamedParameters& np = parameters::default_values())
+{
+  using ::CGAL::parameters::choose_parameter;
+  using ::CGAL::parameters::get_parameter;
+  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
+  using GT = typename CGAL::GetGeomTraits<FaceGraph, NamedParameters>::type;
+  using VPM = typename CGAL::GetVertexPointMap<FaceGraph, NamedParameters>::const_type;
+  using FT = typename GT::FT;
+  using Vector_3 = typename GT::Vector_3;
+
+  constexpr bool want_pcd = internal::has_parameter<NamedParameters, internal_np::vertex_principal_curvatures_and_directions_map_t>()
+#if CGAL_VERSION_MAJOR >= 6
+    || internal::has_parameter<NamedParameters, ::CGAL::internal_np::vertex_principal_curvatures_and_directions_map_t>()
+#endif
+    ;
+  constexpr bool want_mean = internal::has_parameter<NamedParameters, internal_np::vertex_mean_curvature_map_t>()
+#if CGAL_VERSION_MAJOR >= 6
+    || internal::has_parameter<NamedParameters, ::CGAL::internal_np::vertex_mean_curvature_map_t>()
+#endif
+    ;
+  constexpr bool want_gaussian = internal::has_parameter<NamedParameters, internal_np::vertex_Gaussian_curvature_map_t>()
+#if CGAL_VERSION_MAJOR >= 6
+    || internal::has_parameter<NamedParameters, ::CGAL::internal_np::vertex_Gaussian_curvature_map_t>()
+#endif
+    ;
+  constexpr bool want_status = internal::has_parameter<NamedParameters, internal_np::vertex_estimation_status_map_t>();
+  constexpr bool given_normals = internal::has_parameter<NamedParameters, ::CGAL::internal_np::vertex_normal_map_t>();
+
+  internal::Platelet_fit_settings settings;
+  settings.rings = choose_parameter(get_parameter(np, internal_np::neighborhood_rings), 1);
+  settings.boundary_rings = choose_parameter(get_parameter(np, internal_np::boundary_neighborhood_rings), settings.rings);
+  settings.max_rings = choose_parameter(get_parameter(np, internal_np::max_neighborhood_rings), 3);
+  settings.max_condition = choose_parameter(get_parameter(np, internal_np::max_condition_number), 1e3);
+  const Vertex_normal_method normal_method =
+    choose_parameter(get_parameter(np, internal_np::vertex_normal_method), Vertex_normal_method::quadric_fit);
+  if (settings.rings < 1 || settings.boundary_rings < 1)
+    throw std::invalid_argument("paraboloid_fitting_curvatures: neighborhood_rings and boundary_neighborhood_rings must be at least 1");
+  if (settings.max_rings < settings.rings || settings.max_rings < settings.boundary_rings)
+    throw std::invalid_argument("paraboloid_fitting_curvatures: max_neighborhood_rings must be at least the starting rings");
+  if (!(settings.max_condition > 1))
+    throw std::invalid_argument("paraboloid_fitting_curvatures: max_condition_number must be greater than 1");
+
+  if constexpr (!(want_pcd || want_mean || want_gaussian || want_status))
+    return;
+  else {
+    const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                     get_const_property_map(CGAL::vertex_point, g));
+    const auto normals = get_parameter(np, CGAL::internal_np::vertex_normal_map);
+
+    struct Worker
+    {
+      internal::Platelet_fitter<FaceGraph, VPM> fitter;
+      const FaceGraph* g;
+      VPM vpm;
+      Vertex_normal_method method;
+      std::remove_const_t<decltype(normals)> normal_map;
+
+      // The given normal, read on the calling thread (see for_each_vertex).
+      Eigen::Vector3d load(vertex_descriptor v) const
+      {
+        if constexpr (given_normals) {
+          const auto n = get(normal_map, v);
+          return Eigen::Vector3d(CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z()));
+        } else {
+          (void)v;
+          return Eigen::Vector3d::Zero();
+        }
+      }
+
+      internal::Surface_estimate compute(vertex_descriptor v, const Eigen::Vector3d& given)
+      {
+        const bool fit_gradient = !given_normals && method == Vertex_normal_method::quadric_fit;
+        const Eigen::Vector3d normal =
+          given_normals ? given
+                        : internal::face_average_normal(v, *g, vpm,
+                                                        fit_gradient ? Vertex_normal_method::area_weighted : method);
+        const double length = normal.norm();
+        if (!(length > 0) || !std::isfinite(length))
+          return internal::Surface_estimate();
+        return fit_gradient ? fitter.fit_with_fitted_normal(v, normal / length) : fitter.fit(v, normal / length);
+      }
+    };
+
+    const Worker worker{internal::Platelet_fitter<FaceGraph, VPM>(g, vpm, settings), &g, vpm, normal_method, normals};
+
+    internal::for_each_vertex<ConcurrencyTag>(vertices(g), worker,
+      [&](vertex_descriptor v, const internal::Surface_estimate& e) {
+        if constexpr (want_pcd)
+          put(internal::get_vertex_principal_curvatures_and_directions_map(np), v,
+              Principal_curvatures_and_directions<GT>(
+                FT(e.min_curvature), FT(e.max_curvature),
+                Vector_3(e.min_direction.x(), e.min_direction.y(), e.min_direction.z()),
+                Vector_3(e.max_direction.x(), e.max_direction.y(), e.max_direction.z())));
+        if constexpr (want_mean)
+          put(internal::get_vertex_mean_curvature_map(np), v, FT(0.5 * (e.max_curvature + e.min_curvature)));
+        if constexpr (want_gaussian)
+          put(internal::get_vertex_Gaussian_curvature_map(np), v, FT(e.max_curvature * e.min_curvature));
+        if constexpr (want_status)
+          put(get_parameter(np, internal_np::vertex_estimation_status_map), v, e.status);
+      });
+  }
+}
+
+} // namespace Curvature_estimation
+} // namespace CGAL
+
+#endif // CGAL_CURVATURE_ESTIMATION_PARABOLOID_FITTING_H

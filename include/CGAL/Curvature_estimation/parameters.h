@@ -1,0 +1,149 @@
+// Named parameters of the curvature estimation package.
+//
+// CGAL 5.5 cannot be taught new member functions for chaining, so this package
+// has its own class deriving from CGAL::Named_function_parameters: CGAL's lookup
+// (get_parameter, choose_parameter, is_default_parameter, GetGeomTraits, ...)
+// accepts it because it is-a CGAL pack, and its members return the derived type
+// for this package's parameters and for the CGAL parameters the estimators read,
+// so that both kinds chain in any order. The tags live in this package's own
+// namespace so that CGAL 6, which has tags of the same names, does not collide.
+#ifndef CGAL_CURVATURE_ESTIMATION_PARAMETERS_H
+#define CGAL_CURVATURE_ESTIMATION_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/version.h>
+
+#include <type_traits>
+
+// X-macro lists: X(tag type, name); the tag's single value and the chaining
+// function share the name, as in CGAL.
+// This package's parameters:
+#define CGAL_CE_PACKAGE_PARAMETERS(X)                                                         \
+  X(vertex_mean_curvature_map_t, vertex_mean_curvature_map)                           \
+  X(vertex_Gaussian_curvature_map_t, vertex_Gaussian_curvature_map)                   \
+  X(vertex_principal_curvatures_and_directions_map_t,                                 \
+    vertex_principal_curvatures_and_directions_map)                                   \
+  X(vertex_estimation_status_map_t, vertex_estimation_status_map)                     \
+  X(vertex_normal_method_t, vertex_normal_method)                                     \
+  X(neighborhood_rings_t, neighborhood_rings)                                         \
+  X(boundary_neighborhood_rings_t, boundary_neighborhood_rings)                       \
+  X(max_neighborhood_rings_t, max_neighborhood_rings)                                 \
+  X(max_condition_number_t, max_condition_number)
+
+// CGAL's parameters that functions of this package read; re-declared as members
+// so that chaining them never falls back to CGAL's own class.
+#define CGAL_CE_CGAL_PARAMETERS(X)      \
+  X(vertex_point_t, vertex_point_map)   \
+  X(vertex_normal_map_t, vertex_normal_map) \
+  X(geom_traits_t, geom_traits)         \
+  X(vertex_index_t, vertex_index_map)   \
+  X(face_index_t, face_index_map)
+
+namespace CGAL {
+namespace Curvature_estimation {
+namespace internal_np {
+
+#define CGAL_CE_DECLARE_TAG(TAG, NAME) enum TAG { NAME };
+CGAL_CE_PACKAGE_PARAMETERS(CGAL_CE_DECLARE_TAG)
+#undef CGAL_CE_DECLARE_TAG
+
+} // namespace internal_np
+
+/// \ingroup PkgCurvatureEstimationRef
+/// A named-parameter pack: a `CGAL::Named_function_parameters` whose chaining
+/// members also cover the parameters of this package. Users never name this
+/// type; they start a chain with a function of `CGAL::Curvature_estimation::parameters`.
+template <typename T = bool,
+          typename Tag = ::CGAL::internal_np::all_default_t,
+          typename Base = ::CGAL::internal_np::No_property>
+struct Named_function_parameters : ::CGAL::Named_function_parameters<T, Tag, Base>
+{
+  // Not called `base`: CGAL's lookup walks the chain through the inherited
+  // typedef `base`, which must stay CGAL's Named_params_impl.
+  using CGAL_pack = ::CGAL::Named_function_parameters<T, Tag, Base>;
+  using self = Named_function_parameters<T, Tag, Base>;
+
+  Named_function_parameters() : CGAL_pack() {}
+  Named_function_parameters(const T& v) : CGAL_pack(v) {}
+  Named_function_parameters(const T& v, const Base& b) : CGAL_pack(v, b) {}
+
+#define CGAL_CE_MEMBER(NS, TAG, NAME)                                   \
+  template <typename K>                                                 \
+  Named_function_parameters<K, NS::TAG, self> NAME(const K& k) const    \
+  {                                                                     \
+    return Named_function_parameters<K, NS::TAG, self>(k, *this);       \
+  }
+#define CGAL_CE_PACKAGE_MEMBER(TAG, NAME) CGAL_CE_MEMBER(::CGAL::Curvature_estimation::internal_np, TAG, NAME)
+#define CGAL_CE_CGAL_MEMBER(TAG, NAME) CGAL_CE_MEMBER(::CGAL::internal_np, TAG, NAME)
+  CGAL_CE_PACKAGE_PARAMETERS(CGAL_CE_PACKAGE_MEMBER)
+  CGAL_CE_CGAL_PARAMETERS(CGAL_CE_CGAL_MEMBER)
+#undef CGAL_CE_PACKAGE_MEMBER
+#undef CGAL_CE_CGAL_MEMBER
+#undef CGAL_CE_MEMBER
+};
+
+namespace parameters {
+
+using Default_named_parameters = Named_function_parameters<>;
+
+/// An empty pack: every parameter takes its default value.
+inline Default_named_parameters default_values() { return Default_named_parameters(); }
+
+#define CGAL_CE_FREE_FUNCTION(NS, TAG, NAME)                        \
+  template <typename K>                                             \
+  Named_function_parameters<K, NS::TAG> NAME(const K& k)            \
+  {                                                                 \
+    return Named_function_parameters<K, NS::TAG>(k);                \
+  }
+#define CGAL_CE_PACKAGE_FREE(TAG, NAME) CGAL_CE_FREE_FUNCTION(::CGAL::Curvature_estimation::internal_np, TAG, NAME)
+#define CGAL_CE_CGAL_FREE(TAG, NAME) CGAL_CE_FREE_FUNCTION(::CGAL::internal_np, TAG, NAME)
+CGAL_CE_PACKAGE_PARAMETERS(CGAL_CE_PACKAGE_FREE)
+CGAL_CE_CGAL_PARAMETERS(CGAL_CE_CGAL_FREE)
+#undef CGAL_CE_PACKAGE_FREE
+#undef CGAL_CE_CGAL_FREE
+#undef CGAL_CE_FREE_FUNCTION
+
+} // namespace parameters
+
+namespace internal {
+
+// True when `np` holds a parameter with tag `Tag`.
+template <typename NamedParameters, typename Tag>
+constexpr bool has_parameter()
+{
+  return !::CGAL::parameters::is_default_parameter<NamedParameters, Tag>::value;
+}
+
+// The output maps that CGAL 6 also names (CGAL::internal_np::vertex_mean_curvature_map_t
+// and friends): on CGAL 6 a pack built with CGAL's own functions is accepted too.
+// This package's tag wins when both are given.
+#if CGAL_VERSION_MAJOR >= 6
+#define CGAL_CE_CGAL6_ALIAS(OURS, THEIRS)                                                       \
+  template <typename NP>                                                                        \
+  decltype(auto) get_##OURS(const NP& np)                                                       \
+  {                                                                                             \
+    if constexpr (has_parameter<NP, ::CGAL::Curvature_estimation::internal_np::OURS##_t>())    \
+      return ::CGAL::parameters::get_parameter(np, ::CGAL::Curvature_estimation::internal_np::OURS); \
+    else                                                                                        \
+      return ::CGAL::parameters::get_parameter(np, ::CGAL::internal_np::THEIRS);               \
+  }
+#else
+#define CGAL_CE_CGAL6_ALIAS(OURS, THEIRS)                                                       \
+  template <typename NP>                                                                        \
+  decltype(auto) get_##OURS(const NP& np)                                                       \
+  {                                                                                             \
+    return ::CGAL::parameters::get_parameter(np, ::CGAL::Curvature_estimation::internal_np::OURS); \
+  }
+#endif
+CGAL_CE_CGAL6_ALIAS(vertex_mean_curvature_map, vertex_mean_curvature_map)
+CGAL_CE_CGAL6_ALIAS(vertex_Gaussian_curvature_map, vertex_Gaussian_curvature_map)
+CGAL_CE_CGAL6_ALIAS(vertex_principal_curvatures_and_directions_map,
+                    vertex_principal_curvatures_and_directions_map)
+#undef CGAL_CE_CGAL6_ALIAS
+
+} // namespace internal
+} // namespace Curvature_estimation
+} // namespace CGAL
+
+#endif // CGAL_CURVATURE_ESTIMATION_PARAMETERS_H

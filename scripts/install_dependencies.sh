@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# Install the Debian 12 packages needed to build, test and document the
+# CGAL curvature estimation package. Idempotent: exits at once when every
+# package is already installed.
+set -euo pipefail
+
+PACKAGES=(
+  # Toolchain and build system (C++17 compiler, CMake >= 3.16, make).
+  build-essential cmake g++ make
+  # CGAL 5.5 headers + CMake config; libcgal-demo ships
+  # /usr/share/doc/libcgal-dev/data.tar.gz (bunny, elephant, armadillo meshes).
+  libcgal-dev libcgal-demo
+  # CGAL's dependencies: Eigen3 (linear algebra, CGAL::Eigen3_support),
+  # Boost (header-only parts), TBB (optional parallelism, CGAL::TBB_support),
+  # GMP/MPFR (exact number types used by CGAL kernels).
+  libeigen3-dev libboost-dev libtbb-dev libgmp-dev libmpfr-dev
+  # Unit tests (GoogleTest/GoogleMock) and speed benchmarks (Google Benchmark).
+  libgtest-dev libgmock-dev libbenchmark-dev
+  # User manual (CGAL-style Doxygen documentation in doc/).
+  doxygen
+)
+
+is_installed() {
+  dpkg -s "$1" 2>/dev/null | grep -q '^Status: install ok installed$'
+}
+
+missing=()
+for pkg in "${PACKAGES[@]}"; do
+  if ! is_installed "$pkg"; then
+    missing+=("$pkg")
+  fi
+done
+
+if [ "${#missing[@]}" -eq 0 ]; then
+  echo "install_dependencies: all ${#PACKAGES[@]} packages already installed."
+  exit 0
+fi
+
+echo "install_dependencies: missing packages: ${missing[*]}"
+
+SUDO=()
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1; then
+    SUDO=(sudo)
+  else
+    echo "install_dependencies: not root and sudo not found; install manually:" >&2
+    echo "  apt-get install -y --no-install-recommends ${missing[*]}" >&2
+    exit 1
+  fi
+fi
+
+"${SUDO[@]}" apt-get update
+"${SUDO[@]}" env DEBIAN_FRONTEND=noninteractive \
+  apt-get install -y --no-install-recommends "${missing[@]}"
