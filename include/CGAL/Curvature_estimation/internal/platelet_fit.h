@@ -1,5 +1,6 @@
 // Hamann's platelet fit at one vertex of a FaceGraph: gather the k-ring, express
-// it in a tangent frame, fit the paraboloid, widen while ill-conditioned.
+// it in a tangent frame, fit the paraboloid, widen while ill-conditioned; and the
+// second-order normal that the fit uses by default.
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_PLATELET_FIT_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_PLATELET_FIT_H
 
@@ -31,6 +32,16 @@ struct Platelet_fit_settings
   double max_condition = 1e3;
 };
 
+// The cubic fit of a boundary normal: over at least 3 rings (with 2, an edge
+// vertex of a grid has only three rows of samples, too few for cubic terms in
+// the normal direction), Gaussian weights of width the mean 1-ring edge
+// (the quartic remainder, largest at the far samples, otherwise leaks into the
+// gradient through a one-sided stencil), and a condition threshold 100 times
+// the quadratic one (well-posed cubic stencils show about 1e4, the ones that
+// are singular in the tangent plane above 1e16).
+constexpr int cubic_normal_min_rings = 3;
+constexpr double cubic_normal_condition_factor = 100;
+
 struct Surface_estimate
 {
   Estimation_status status = Estimation_status::not_estimable;
@@ -60,8 +71,8 @@ public:
     return fit_curvature(normal);
   }
 
-  // The same, in the frame of a second-order normal fitted from the unit
-  // `initial_normal` (see fit_normal).
+  // The same, in the frame of the normal fitted from the unit `initial_normal`
+  // (see fitted_normal).
   Surface_estimate fit_with_fitted_normal(vertex_descriptor v, const Eigen::Vector3d& initial_normal)
   {
     Eigen::Vector3d normal = initial_normal;
@@ -70,12 +81,12 @@ public:
     return fit_curvature(normal);
   }
 
-  // A second-order normal: `normal` (unit, on input a first-order estimate such
-  // as a face average) corrected by the gradient of a Taylor fit in its frame.
-  // A symmetric interior stencil cancels the odd terms, so the degree-2 fit over
-  // the starting rings suffices there; a one-sided boundary stencil does not, so
-  // a boundary vertex fits the cubic terms too, over at least two rings, and
-  // falls back to degree 2 where that is ill-conditioned up to the widest ring.
+  // A normal of second order or better: `normal` (unit; on input a first-order
+  // estimate such as a face average) corrected by the gradient of a Taylor fit
+  // in its frame. A symmetric interior stencil cancels the odd terms, so the
+  // degree-2 fit over the starting rings suffices there; a one-sided boundary
+  // stencil does not, and a boundary vertex fits the cubic terms too, falling
+  // back to degree 2 where that is ill-conditioned up to the widest ring.
   bool fitted_normal(vertex_descriptor v, Eigen::Vector3d& normal)
   {
     return gather(v) && fit_normal(normal);
@@ -87,8 +98,8 @@ private:
     return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
   }
 
-  // The starting rings, and the local length scale (mean distance to the
-  // 1-ring) that makes the fit scale invariant.
+  // The 1-ring, and the local length scale (mean distance to the 1-ring) that
+  // makes the fit scale invariant.
   bool gather(vertex_descriptor v)
   {
     center_ = to_eigen(get(vpm_, v));
@@ -113,7 +124,6 @@ private:
     scale_ = length_sum / length_count;
     for (Eigen::Vector3d& offset : offsets_)
       offset /= scale_;
-
     on_border_ = static_cast<bool>(is_border(v, *g_));
     return true;
   }
@@ -132,40 +142,42 @@ private:
     return true;
   }
 
-  // Fits over the first rings, from `rings` on, widening until the normal
-  // equations are well-conditioned; returns the rings used, 0 on failure.
+  // Fits over the rings up to `rings`, widening up to `max_rings` until the
+  // normal equations are well-conditioned; returns the rings used, 0 on failure.
   template <typename Fit>
-  int fit_widening(const Eigen::Vector3d& normal, int rings, Fit& fit)
+  int fit_widening(const Eigen::Vector3d& normal, int rings, int max_rings, double max_condition, Fit& fit)
   {
-    for (; rings <= settings_.max_rings && reach(rings); ++rings)
-      if (fit_in_frame(normal, rings, fit))
+    for (; rings <= max_rings && reach(rings); ++rings)
+      if (fit_in_frame(normal, rings, max_condition, fit))
         return rings;
     return 0;
   }
 
-  template <typename Fit>
-  bool correct_normal(Eigen::Vector3d& normal, int rings)
-  {
-    Fit fit;
-    if (fit_widening(normal, rings, fit) == 0)
-      return false;
-    const Eigen::Vector3d corrected = normal - tangent_basis<3>(normal) * fit.gradient();
-    normal = corrected.normalized();
-    return normal.allFinite();
-  }
-
   bool fit_normal(Eigen::Vector3d& normal)
   {
-    if (on_border_ && correct_normal<Taylor_fit<2, 1, 3>>(normal, (std::max)(2, start_rings())))
-      return true;
-    return correct_normal<Taylor_fit<2, 1, 2>>(normal, start_rings());
+    if (on_border_) {
+      const int rings = (std::max)(cubic_normal_min_rings, start_rings());
+      Taylor_fit<2, 1, 3> cubic;
+      if (fit_widening(normal, rings, (std::max)(rings, settings_.max_rings),
+                       cubic_normal_condition_factor * settings_.max_condition, cubic) != 0)
+        return correct_normal(normal, cubic.gradient());
+    }
+    Taylor_fit<2, 1, 2> quadratic;
+    return fit_widening(normal, start_rings(), settings_.max_rings, settings_.max_condition, quadratic) != 0 &&
+           correct_normal(normal, quadratic.gradient());
+  }
+
+  static bool correct_normal(Eigen::Vector3d& normal, const Eigen::Vector2d& gradient)
+  {
+    normal = (normal - tangent_basis<3>(normal) * gradient).normalized();
+    return normal.allFinite();
   }
 
   Surface_estimate fit_curvature(const Eigen::Vector3d& normal)
   {
     Surface_estimate result;
     Taylor_fit<2, 2, 2> fit;
-    const int rings = fit_widening(normal, start_rings(), fit);
+    const int rings = fit_widening(normal, start_rings(), settings_.max_rings, settings_.max_condition, fit);
     if (rings == 0)
       return result;
     const Graph_curvature<3> curvature =
@@ -181,17 +193,20 @@ private:
     return result;
   }
 
+  // Samples weighted by a Gaussian of width the mean 1-ring edge in the cubic
+  // fit only (see cubic_normal_min_rings); Hamann's fit is unweighted.
   template <typename Fit>
-  bool fit_in_frame(const Eigen::Vector3d& normal, int rings, Fit& fit) const
+  bool fit_in_frame(const Eigen::Vector3d& normal, int rings, double max_condition, Fit& fit) const
   {
+    constexpr bool weighted = Fit::unknowns > Taylor_fit<2, 1, 2>::unknowns;
     const Eigen::Matrix<double, 3, 2> tangents = tangent_basis<3>(normal);
     fit.clear();
     for (std::size_t i = 1; i < rings_.ring_end(rings); ++i) {
       const Eigen::Vector3d& q = offsets_[i];
       if (q.allFinite())
-        fit.add(tangents.transpose() * q, normal.dot(q));
+        fit.add(tangents.transpose() * q, normal.dot(q), weighted ? std::exp(-q.squaredNorm()) : 1.0);
     }
-    return fit.solve(settings_.max_condition);
+    return fit.solve(max_condition);
   }
 
   const FaceGraph* g_;

@@ -22,8 +22,8 @@ namespace internal {
 
 constexpr int number_of_monomials(int D, int order)
 {
-  // (D + order - 1) choose order, for D <= 3 and order <= 3
-  return order == 1 ? D : order == 2 ? D * (D + 1) / 2 : D * (D + 1) * (D + 2) / 6;
+  // (D + order - 1) choose order
+  return order == 0 ? 1 : number_of_monomials(D, order - 1) * (D + order - 1) / order;
 }
 
 template <int D, int FirstOrder, int LastOrder>
@@ -49,8 +49,8 @@ public:
     size_ = 0;
   }
 
-  // One sample: a point of the tangent space and the height above it.
-  void add(const Point& x, double height)
+  // One sample: a point of the tangent space, the height above it, its weight.
+  void add(const Point& x, double height, double weight = 1.0)
   {
     Row row;
     int column = 0;
@@ -66,8 +66,8 @@ public:
         for (int j = i; j < D; ++j)
           for (int k = j; k < D; ++k)
             row[column++] = x[i] * x[j] * x[k];
-    normal_matrix_.noalias() += row * row.transpose();
-    right_hand_side_.noalias() += height * row;
+    normal_matrix_.noalias() += weight * row * row.transpose();
+    right_hand_side_.noalias() += (weight * height) * row;
     ++size_;
   }
 
@@ -75,24 +75,30 @@ public:
 
   // Solves the normal equations. Returns false when there are fewer samples than
   // unknowns, when the normal matrix is singular, or when its condition number
-  // (1-norm, exact for this small matrix) exceeds `max_condition`: a stencil that
-  // is singular in the tangent space can still be solvable in floating point once
-  // tilted, and its solution is then garbage.
+  // exceeds `max_condition`: a stencil that is singular in the tangent space can
+  // still be solvable in floating point once tilted, and its solution is then
+  // garbage. The condition number is that of the matrix scaled to a unit
+  // diagonal (1-norm, exact for this small matrix), so that it measures how
+  // nearly dependent the samples make the terms, not how the terms are scaled:
+  // one threshold then serves fits of any order.
   bool solve(double max_condition)
   {
     condition_ = std::numeric_limits<double>::infinity();
     if (size_ < unknowns)
       return false;
-    const Eigen::LLT<Normal_matrix> cholesky(normal_matrix_);
+    const Row scaling = normal_matrix_.diagonal().cwiseSqrt().cwiseInverse();
+    if (!scaling.allFinite())
+      return false;
+    const Normal_matrix scaled = scaling.asDiagonal() * normal_matrix_ * scaling.asDiagonal();
+    const Eigen::LLT<Normal_matrix> cholesky(scaled);
     if (cholesky.info() != Eigen::Success)
       return false;
-    const Normal_matrix inverse = cholesky.solve(Normal_matrix::Identity());
-    condition_ = normal_matrix_.cwiseAbs().colwise().sum().maxCoeff() *
-                 inverse.cwiseAbs().colwise().sum().maxCoeff();
+    const Normal_matrix scaled_inverse = cholesky.solve(Normal_matrix::Identity());
+    condition_ = scaled.cwiseAbs().colwise().sum().maxCoeff() * scaled_inverse.cwiseAbs().colwise().sum().maxCoeff();
     if (!(condition_ <= max_condition))
       return false;
 
-    const Row coefficients = inverse * right_hand_side_;
+    const Row coefficients = scaling.asDiagonal() * (scaled_inverse * scaling.cwiseProduct(right_hand_side_));
     int column = 0;
     for (int i = 0; i < D; ++i)
       for (int j = i; j < D; ++j) {
