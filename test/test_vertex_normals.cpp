@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_surfaces.h"
+
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -297,10 +299,12 @@ TEST(VertexNormals, IrregularStarMatchesHandWeightsAndMethodsDiffer)
   EXPECT_GT(angle_between(got[0], got[2]), 1e-2);
   EXPECT_GT(angle_between(got[1], got[2]), 1e-2);
 
-  // the default method is area_weighted
-  auto nmap = star.mesh.add_property_map<vertex_descriptor, Vector>("v:default").first;
-  CE::estimate_vertex_normals(star.mesh, nmap);
-  EXPECT_EQ(to_eigen(get(nmap, star.c)), got[0]);
+  // the default method is quadric_fit
+  auto default_map = star.mesh.add_property_map<vertex_descriptor, Vector>("v:default").first;
+  auto fitted_map = star.mesh.add_property_map<vertex_descriptor, Vector>("v:fitted").first;
+  CE::estimate_vertex_normals(star.mesh, default_map);
+  CE::estimate_vertex_normals(star.mesh, fitted_map, CE::parameters::vertex_normal_method(Method::quadric_fit));
+  EXPECT_EQ(to_eigen(get(default_map, star.c)), to_eigen(get(fitted_map, star.c)));
 }
 
 TEST(VertexNormals, ScaleInvariantOnTinyAndHugeMeshes)
@@ -513,14 +517,47 @@ TEST(VertexNormals, PolyhedronAndSurfaceMeshAgree)
 }
 
 // ---------------------------------------------------------------------------
-// (g) quadric_fit: placeholder until it is implemented (then replace this test)
+// (g) quadric_fit: second order at every vertex, boundary included
 // ---------------------------------------------------------------------------
-TEST(VertexNormals, QuadricFitNotImplementedYetThrowsInvalidArgument)
+TEST(VertexNormals, QuadricFitIsSecondOrderAlsoAtTheBoundaryWhereFaceAveragesAreFirstOrder)
+{
+  // Jittered grids of the graph .1(cos pi x + cos pi y) at spacing h and h/2; the
+  // worst angle error over ALL vertices (boundary included) against the exact
+  // normal. A face average tilts by O(h) at a one-sided boundary star.
+  const ce_test::Graph_function f = ce_test::hamann_table1_functions()[8];
+  double previous_fitted = 0, previous_area = 0;
+  for (std::size_t n : {21, 41}) {
+    const ce_test::Soup soup = ce_test::jittered_grid_graph_soup(f, n, -1, 1, 0.2, 5);
+    Mesh m = ce_test::to_mesh<Mesh>(soup);
+    const auto exact = ce_test::graph_curvatures(f, soup);
+    double worst_fitted = 0, worst_area = 0;
+    for (Method method : {Method::quadric_fit, Method::area_weighted}) {
+      auto nmap = m.add_property_map<vertex_descriptor, Vector>("v:n").first;
+      CE::estimate_vertex_normals(m, nmap, CE::parameters::vertex_normal_method(method));
+      std::size_t i = 0;
+      for (vertex_descriptor v : vertices(m)) {
+        const double angle = angle_between(to_eigen(get(nmap, v)), exact[i++].normal);
+        (method == Method::quadric_fit ? worst_fitted : worst_area) =
+          std::max(method == Method::quadric_fit ? worst_fitted : worst_area, angle);
+      }
+      m.remove_property_map(nmap);
+    }
+    std::printf("n = %zu: worst normal angle error, quadric_fit %.2e rad, area_weighted %.2e rad\n", n, worst_fitted,
+                worst_area);
+    EXPECT_LT(worst_fitted, worst_area);
+    if (previous_fitted > 0) {
+      const double h_ratio = 40.0 / 20.0;
+      EXPECT_GT(std::log(previous_fitted / worst_fitted) / std::log(h_ratio), 1.8);  // second order
+      EXPECT_LT(std::log(previous_area / worst_area) / std::log(h_ratio), 1.5);      // first order
+    }
+    previous_fitted = worst_fitted;
+    previous_area = worst_area;
+  }
+}
+
+TEST(VertexNormals, FaceAverageKernelRefusesQuadricFit)
 {
   Star star;
-  auto nmap = star.mesh.add_property_map<vertex_descriptor, Vector>("v:q").first;
-  EXPECT_THROW(CE::estimate_vertex_normals(star.mesh, nmap, CE::parameters::vertex_normal_method(Method::quadric_fit)),
-               std::invalid_argument);
   EXPECT_THROW(CE::internal::face_average_normal(star.c, star.mesh, get(CGAL::vertex_point, star.mesh),
                                                  Method::quadric_fit),
                std::invalid_argument);

@@ -169,20 +169,10 @@ void paraboloid_fitting_curvatures(const FaceGraph& g,
   constexpr bool want_status = internal::has_parameter<NamedParameters, internal_np::vertex_estimation_status_map_t>();
   constexpr bool given_normals = internal::has_parameter<NamedParameters, ::CGAL::internal_np::vertex_normal_map_t>();
 
-  internal::Platelet_fit_settings settings;
-  settings.rings = choose_parameter(get_parameter(np, internal_np::neighborhood_rings), 1);
-  settings.boundary_rings = choose_parameter(get_parameter(np, internal_np::boundary_neighborhood_rings), settings.rings);
-  settings.max_rings = choose_parameter(get_parameter(np, internal_np::max_neighborhood_rings), 3);
-  settings.max_condition = choose_parameter(get_parameter(np, internal_np::max_condition_number), 1e3);
+  const internal::Platelet_fit_settings settings =
+    internal::platelet_fit_settings(np, "paraboloid_fitting_curvatures");
   const Vertex_normal_method normal_method =
     choose_parameter(get_parameter(np, internal_np::vertex_normal_method), Vertex_normal_method::quadric_fit);
-  if (settings.rings < 1 || settings.boundary_rings < 1)
-    throw std::invalid_argument("paraboloid_fitting_curvatures: neighborhood_rings and boundary_neighborhood_rings must be at least 1");
-  if (settings.max_rings < settings.rings || settings.max_rings < settings.boundary_rings)
-    throw std::invalid_argument("paraboloid_fitting_curvatures: max_neighborhood_rings must be at least the starting rings");
-  if (!(settings.max_condition > 1))
-    throw std::invalid_argument("paraboloid_fitting_curvatures: max_condition_number must be greater than 1");
-
   if constexpr (!(want_pcd || want_mean || want_gaussian || want_status))
     return;
   else {
@@ -193,8 +183,6 @@ void paraboloid_fitting_curvatures(const FaceGraph& g,
     struct Worker
     {
       internal::Platelet_fitter<FaceGraph, VPM> fitter;
-      const FaceGraph* g;
-      VPM vpm;
       Vertex_normal_method method;
       std::remove_const_t<decltype(normals)> normal_map;
 
@@ -212,19 +200,11 @@ void paraboloid_fitting_curvatures(const FaceGraph& g,
 
       internal::Surface_estimate compute(vertex_descriptor v, const Eigen::Vector3d& given)
       {
-        const bool fit_gradient = !given_normals && method == Vertex_normal_method::quadric_fit;
-        const Eigen::Vector3d normal =
-          given_normals ? given
-                        : internal::face_average_normal(v, *g, vpm,
-                                                        fit_gradient ? Vertex_normal_method::area_weighted : method);
-        const double length = normal.norm();
-        if (!(length > 0) || !std::isfinite(length))
-          return internal::Surface_estimate();
-        return fit_gradient ? fitter.fit_with_fitted_normal(v, normal / length) : fitter.fit(v, normal / length);
+        return given_normals ? fitter.fit(v, given) : fitter.fit(v, method);
       }
     };
 
-    const Worker worker{internal::Platelet_fitter<FaceGraph, VPM>(g, vpm, settings), &g, vpm, normal_method, normals};
+    const Worker worker{internal::Platelet_fitter<FaceGraph, VPM>(g, vpm, settings), normal_method, normals};
 
     internal::for_each_vertex<ConcurrencyTag>(vertices(g), worker,
       [&](vertex_descriptor v, const internal::Surface_estimate& e) {

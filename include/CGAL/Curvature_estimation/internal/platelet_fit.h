@@ -5,6 +5,8 @@
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_PLATELET_FIT_H
 
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
+#include <CGAL/Curvature_estimation/parameters.h>
+#include <CGAL/Curvature_estimation/internal/face_average_normal.h>
 #include <CGAL/Curvature_estimation/internal/neighborhood.h>
 #include <CGAL/Curvature_estimation/internal/quadric_fit.h>
 #include <CGAL/Curvature_estimation/internal/shape_operator.h>
@@ -18,6 +20,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -31,6 +35,28 @@ struct Platelet_fit_settings
   int max_rings = 3;        // widening stops here
   double max_condition = 1e3;
 };
+
+// The settings from the named parameters, with the documented defaults;
+// `caller` names the public function in error messages.
+template <typename NamedParameters>
+Platelet_fit_settings platelet_fit_settings(const NamedParameters& np, const char* caller)
+{
+  using ::CGAL::parameters::choose_parameter;
+  using ::CGAL::parameters::get_parameter;
+  Platelet_fit_settings settings;
+  settings.rings = choose_parameter(get_parameter(np, internal_np::neighborhood_rings), 1);
+  settings.boundary_rings = choose_parameter(get_parameter(np, internal_np::boundary_neighborhood_rings), settings.rings);
+  settings.max_rings = choose_parameter(get_parameter(np, internal_np::max_neighborhood_rings), 3);
+  settings.max_condition = choose_parameter(get_parameter(np, internal_np::max_condition_number), 1e3);
+  const std::string where = std::string(caller) + ": ";
+  if (settings.rings < 1 || settings.boundary_rings < 1)
+    throw std::invalid_argument(where + "neighborhood_rings and boundary_neighborhood_rings must be at least 1");
+  if (settings.max_rings < settings.rings || settings.max_rings < settings.boundary_rings)
+    throw std::invalid_argument(where + "max_neighborhood_rings must be at least the starting rings");
+  if (!(settings.max_condition > 1))
+    throw std::invalid_argument(where + "max_condition_number must be greater than 1");
+  return settings;
+}
 
 // The cubic fit of a boundary normal: over at least 3 rings (with 2, an edge
 // vertex of a grid has only three rows of samples, too few for cubic terms in
@@ -63,33 +89,31 @@ public:
   {}
 
   // Hamann's fit: the paraboloid through the k-ring in the tangent frame of the
-  // unit `normal`, widened while ill-conditioned.
+  // given `normal` (any length), widened while ill-conditioned.
   Surface_estimate fit(vertex_descriptor v, const Eigen::Vector3d& normal)
   {
-    if (!gather(v))
+    const double length = normal.norm();
+    if (!(length > 0) || !std::isfinite(length) || !gather(v))
+      return Surface_estimate();
+    return fit_curvature(normal / length);
+  }
+
+  // The same with the normal estimated by `method`.
+  Surface_estimate fit(vertex_descriptor v, Vertex_normal_method method)
+  {
+    Eigen::Vector3d normal;
+    if (!gather(v) || !estimate_normal(v, method, normal))
       return Surface_estimate();
     return fit_curvature(normal);
   }
 
-  // The same, in the frame of the normal fitted from the unit `initial_normal`
-  // (see fitted_normal).
-  Surface_estimate fit_with_fitted_normal(vertex_descriptor v, const Eigen::Vector3d& initial_normal)
+  // The unit normal by `method`; false where there is none.
+  bool normal(vertex_descriptor v, Vertex_normal_method method, Eigen::Vector3d& normal)
   {
-    Eigen::Vector3d normal = initial_normal;
-    if (!gather(v) || !fit_normal(normal))
-      return Surface_estimate();
-    return fit_curvature(normal);
-  }
-
-  // A normal of second order or better: `normal` (unit; on input a first-order
-  // estimate such as a face average) corrected by the gradient of a Taylor fit
-  // in its frame. A symmetric interior stencil cancels the odd terms, so the
-  // degree-2 fit over the starting rings suffices there; a one-sided boundary
-  // stencil does not, and a boundary vertex fits the cubic terms too, falling
-  // back to degree 2 where that is ill-conditioned up to the widest ring.
-  bool fitted_normal(vertex_descriptor v, Eigen::Vector3d& normal)
-  {
-    return gather(v) && fit_normal(normal);
+    // Face averages need no neighbourhood.
+    if (method == Vertex_normal_method::quadric_fit && !gather(v))
+      return false;
+    return estimate_normal(v, method, normal);
   }
 
 private:
@@ -113,7 +137,9 @@ private:
     for (std::size_t i = 1; i < rings_.ring_end(1); ++i) {
       const Eigen::Vector3d offset = to_eigen(get(vpm_, rings_.vertices()[i])) - center_;
       offsets_.push_back(offset);
-      const double length = offset.norm();
+      double length = offset.norm();
+      if (!(length > 1e-150 && length < 1e150))
+        length = offset.stableNorm();  // no overflow or underflow for huge or tiny meshes
       if (std::isfinite(length)) {
         length_sum += length;
         ++length_count;
@@ -124,7 +150,7 @@ private:
     scale_ = length_sum / length_count;
     for (Eigen::Vector3d& offset : offsets_)
       offset /= scale_;
-    on_border_ = static_cast<bool>(is_border(v, *g_));
+    on_border_ = rings_.center_on_border();
     return true;
   }
 
@@ -144,44 +170,81 @@ private:
 
   // Fits over the rings up to `rings`, widening up to `max_rings` until the
   // normal equations are well-conditioned; returns the rings used, 0 on failure.
+  using Tangents = Eigen::Matrix<double, 3, 2>;
+
   template <typename Fit>
-  int fit_widening(const Eigen::Vector3d& normal, int rings, int max_rings, double max_condition, Fit& fit)
+  int fit_widening(const Eigen::Vector3d& normal, const Tangents& tangents, int rings, int max_rings,
+                   double max_condition, Fit& fit)
   {
     for (; rings <= max_rings && reach(rings); ++rings)
-      if (fit_in_frame(normal, rings, max_condition, fit))
+      if (fit_in_frame(normal, tangents, rings, max_condition, fit))
         return rings;
     return 0;
   }
 
+  // A face average, or for quadric_fit a normal of second order or better: the
+  // area-weighted normal corrected by the gradient of a Taylor fit in its frame.
+  // A symmetric interior stencil cancels the odd terms, so the degree-2 fit over
+  // the starting rings suffices there; a one-sided boundary stencil does not, and
+  // a boundary vertex fits the cubic terms too, falling back to degree 2 where
+  // that is ill-conditioned up to the widest ring.
+  bool estimate_normal(vertex_descriptor v, Vertex_normal_method method, Eigen::Vector3d& normal)
+  {
+    const bool fitted = method == Vertex_normal_method::quadric_fit;
+    normal = fitted ? corner_normal_sum(v) : face_average_normal(v, *g_, vpm_, method);
+    if (!normal.allFinite() || !(normal.squaredNorm() > 0))
+      return false;
+    normal.normalize();
+    return !fitted || fit_normal(normal);
+  }
+
+  // The sum of the faces' corner normals at the center, from the gathered 1-ring:
+  // the area-weighted normal on a triangle mesh, without walking the faces again.
+  Eigen::Vector3d corner_normal_sum(vertex_descriptor v) const
+  {
+    if (!rings_.one_ring_in_fan_order())
+      return face_average_normal(v, *g_, vpm_, Vertex_normal_method::area_weighted);
+    const std::size_t valence = rings_.ring_end(1) - 1;
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (std::size_t k = 0; k < valence; ++k) {
+      const Eigen::Vector3d& previous = offsets_[1 + k];
+      const Eigen::Vector3d& next = offsets_[1 + (k + 1) % valence];
+      if (rings_.has_face(k) && previous.allFinite() && next.allFinite())
+        sum += next.cross(previous);
+    }
+    return sum;
+  }
+
   bool fit_normal(Eigen::Vector3d& normal)
   {
+    const Tangents tangents = tangent_basis<3>(normal);
     if (on_border_) {
       const int rings = (std::max)(cubic_normal_min_rings, start_rings());
       Taylor_fit<2, 1, 3> cubic;
-      if (fit_widening(normal, rings, (std::max)(rings, settings_.max_rings),
+      if (fit_widening(normal, tangents, rings, (std::max)(rings, settings_.max_rings),
                        cubic_normal_condition_factor * settings_.max_condition, cubic) != 0)
-        return correct_normal(normal, cubic.gradient());
+        return correct_normal(normal, tangents, cubic.gradient());
     }
     Taylor_fit<2, 1, 2> quadratic;
-    return fit_widening(normal, start_rings(), settings_.max_rings, settings_.max_condition, quadratic) != 0 &&
-           correct_normal(normal, quadratic.gradient());
+    return fit_widening(normal, tangents, start_rings(), settings_.max_rings, settings_.max_condition, quadratic) != 0 &&
+           correct_normal(normal, tangents, quadratic.gradient());
   }
 
-  static bool correct_normal(Eigen::Vector3d& normal, const Eigen::Vector2d& gradient)
+  static bool correct_normal(Eigen::Vector3d& normal, const Tangents& tangents, const Eigen::Vector2d& gradient)
   {
-    normal = (normal - tangent_basis<3>(normal) * gradient).normalized();
+    normal = (normal - tangents * gradient).normalized();
     return normal.allFinite();
   }
 
   Surface_estimate fit_curvature(const Eigen::Vector3d& normal)
   {
     Surface_estimate result;
+    const Tangents tangents = tangent_basis<3>(normal);
     Taylor_fit<2, 2, 2> fit;
-    const int rings = fit_widening(normal, start_rings(), settings_.max_rings, settings_.max_condition, fit);
+    const int rings = fit_widening(normal, tangents, start_rings(), settings_.max_rings, settings_.max_condition, fit);
     if (rings == 0)
       return result;
-    const Graph_curvature<3> curvature =
-      graph_curvature<3>(fit.hessian(), fit.gradient(), tangent_basis<3>(normal), normal);
+    const Graph_curvature<3> curvature = graph_curvature<3>(fit.hessian(), fit.gradient(), tangents, normal);
     if (!curvature.curvatures.allFinite() || !curvature.directions.allFinite())
       return result;
     result.status = rings > 1 ? Estimation_status::widened : Estimation_status::ok;
@@ -196,10 +259,10 @@ private:
   // Samples weighted by a Gaussian of width the mean 1-ring edge in the cubic
   // fit only (see cubic_normal_min_rings); Hamann's fit is unweighted.
   template <typename Fit>
-  bool fit_in_frame(const Eigen::Vector3d& normal, int rings, double max_condition, Fit& fit) const
+  bool fit_in_frame(const Eigen::Vector3d& normal, const Tangents& tangents, int rings, double max_condition,
+                    Fit& fit) const
   {
     constexpr bool weighted = Fit::unknowns > Taylor_fit<2, 1, 2>::unknowns;
-    const Eigen::Matrix<double, 3, 2> tangents = tangent_basis<3>(normal);
     fit.clear();
     for (std::size_t i = 1; i < rings_.ring_end(rings); ++i) {
       const Eigen::Vector3d& q = offsets_[i];

@@ -1,0 +1,219 @@
+// The vertex normal methods, and the face-averaged normal at one vertex: the
+// first-order normal that every estimator can start from. Included by
+// vertex_normals.h, where the public documentation lives.
+#ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_FACE_AVERAGE_NORMAL_H
+#define CGAL_CURVATURE_ESTIMATION_INTERNAL_FACE_AVERAGE_NORMAL_H
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/number_utils.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace CGAL {
+namespace Curvature_estimation {
+
+/// \ingroup PkgCurvatureEstimationRef
+/// How a normal is estimated at a vertex of a surface mesh.
+///
+/// The three face-averaging methods return the normalised weighted sum
+/// \f$ \sum_f w_f\, n_f \f$ of the unit normals \f$ n_f \f$ of the faces incident to the
+/// vertex; they differ by the weights \f$ w_f \f$. On a mesh inscribed in a smooth surface
+/// their error is in general of first order in the edge length (second order only on
+/// symmetric stars), which is why curvature estimators default to `quadric_fit`.
+enum class Vertex_normal_method : unsigned char
+{
+  /// The area-weighted normal corrected by the gradient of a local Taylor fit: a
+  /// second-order estimate, also at boundary vertices. The default of
+  /// `estimate_vertex_normals()` and of the curvature estimators that need normals.
+  quadric_fit,
+  /// Weights are the face areas: the normalised sum of the (unnormalised) face normal
+  /// vectors.
+  area_weighted,
+  /// Weights are the interior angles of the faces at the vertex (Thürmer and Wüthrich 1998).
+  /// At a reflex vertex of a non-convex polygonal face the angle is larger than \f$ \pi \f$.
+  angle_weighted,
+  /// Centroid weights \f$ w_f = 1/\|G_f - v\|^2 \f$, with \f$ G_f \f$ the centroid (mean of
+  /// the vertices) of face \f$ f \f$ (Chen and Wu 2004; Chen, Wu and Chi 2005, eq. 23 and 25).
+  centroid_weighted
+};
+
+namespace internal {
+
+/// Computes at vertex `v` of `g` the unit weighted average of the unit normals of the
+/// faces incident to `v`, with the weights of `method` (one of `area_weighted`,
+/// `angle_weighted`, `centroid_weighted`), in `double`.
+///
+/// - Faces may be any polygons: a face normal is given by Newell's method over all the
+///   vertices of the face (twice the vector area of the face), the angle at `v` by the two
+///   edges of the face incident to `v` (measured around the face normal, so that a
+///   reflex vertex of a non-convex face gets an angle larger than pi), the centroid
+///   as the mean of the vertices of the face.
+/// - Border halfedges (null faces) are skipped. A face of zero vector area
+///   contributes nothing; for `angle_weighted`, neither does a face with a zero-length
+///   edge at `v`. For `centroid_weighted`, a face whose centroid is `v` (possible only
+///   for a non-convex polygon), or so close to it that the weight overflows, has an
+///   infinite weight: the result is then the average of the unit normals of such faces
+///   alone (the limit of the weighted average as their centroids tend to `v`).
+/// - A face with a non-finite point (or a coordinate difference that overflows)
+///   contributes nothing, so that one bad vertex does not take its neighbours' normals.
+/// - The coordinates are taken relative to `v` and divided by the largest
+///   coordinate difference between `v` and its neighbours, so the result does not depend
+///   on the scale of the mesh (no overflow or underflow for tiny or huge meshes).
+///
+/// \returns a unit vector; or the zero vector when `v` is isolated, has no incident face,
+/// or when all its incident faces are degenerate, have a non-finite point, or their
+/// weighted normals cancel; a vector of quiet NaNs when the point of `v` is not finite
+/// or the weighted sum overflows.
+/// Callers test `n.allFinite() && n.squaredNorm() > 0`.
+///
+/// Pure and allocation-free: it may be called concurrently for different vertices
+/// provided `get(vpm, ·)` may (see the note on `Polyhedron_3`'s dynamic maps in the design).
+///
+/// \pre `method != Vertex_normal_method::quadric_fit` (otherwise `std::invalid_argument`
+/// is thrown: that method is not an average of face normals).
+///
+/// \tparam FaceGraph a model of `FaceGraph`
+/// \tparam VPM a model of `ReadablePropertyMap` from the vertex descriptor to a point
+///         type with `x()`, `y()`, `z()` convertible by `CGAL::to_double()`
+template <typename FaceGraph, typename VPM>
+Eigen::Vector3d face_average_normal(typename boost::graph_traits<FaceGraph>::vertex_descriptor v,
+                                    const FaceGraph& g,
+                                    const VPM& vpm,
+                                    Vertex_normal_method method)
+{
+  using Graph_traits = boost::graph_traits<FaceGraph>;
+  using vertex_descriptor = typename Graph_traits::vertex_descriptor;
+  using halfedge_descriptor = typename Graph_traits::halfedge_descriptor;
+
+  if (method == Vertex_normal_method::quadric_fit)
+    throw std::invalid_argument(
+      "CGAL::Curvature_estimation::internal::face_average_normal(): quadric_fit is not an "
+      "average of face normals; use area_weighted, angle_weighted or centroid_weighted");
+
+  const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+  const Eigen::Vector3d nan = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  constexpr double two_pi = 6.283185307179586476925286766559;
+
+  // Isolated vertex: no halfedge to circulate around.
+  if (halfedge(v, g) == Graph_traits::null_halfedge())
+    return zero;
+
+  auto point = [&vpm](vertex_descriptor u) -> Eigen::Vector3d {
+    const auto& p = get(vpm, u);
+    return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  };
+
+  const Eigen::Vector3d pv = point(v);
+  if (!pv.allFinite())
+    return nan;
+
+  // Local length scale: the largest coordinate difference between v and a neighbour.
+  double scale = 0.;
+  for (halfedge_descriptor h : halfedges_around_target(v, g)) {
+    const double d = (point(source(h, g)) - pv).template lpNorm<Eigen::Infinity>();
+    if (!(d <= (std::numeric_limits<double>::max)())) // NaN or infinite: its faces are skipped below
+      continue;
+    if (d > scale)
+      scale = d;
+  }
+  if (!(scale > 0.)) // all neighbours coincide with v: every face is degenerate
+    return zero;
+
+  // Position of u relative to v, in units of `scale` (division, not multiplication by
+  // 1/scale, which overflows when scale is subnormal).
+  auto local = [&](vertex_descriptor u) -> Eigen::Vector3d { return (point(u) - pv) / scale; };
+
+  Eigen::Vector3d sum = zero;
+  Eigen::Vector3d sum_infinite_weights = zero; // centroid_weighted only
+  for (halfedge_descriptor h : halfedges_around_target(v, g)) {
+    if (is_border(h, g))
+      continue;
+
+    // One walk around the face starting at h (whose target is v, at the local origin):
+    // Newell's normal sum_i q_i x q_{i+1} (the terms with q_v = 0 vanish), the sum of
+    // the vertices, and the two neighbours of v in this face.
+    Eigen::Vector3d newell = zero;
+    Eigen::Vector3d vertex_sum = zero;
+    Eigen::Vector3d previous = zero;   // q of the target of the previous halfedge
+    Eigen::Vector3d next_of_v = zero;  // q of the vertex after v in the face
+    int n_vertices = 0;
+    for (halfedge_descriptor k : halfedges_around_face(h, g)) {
+      const Eigen::Vector3d q = (n_vertices == 0) ? zero : local(target(k, g));
+      if (n_vertices == 1)
+        next_of_v = q;
+      newell += previous.cross(q);
+      vertex_sum += q;
+      previous = q;
+      ++n_vertices;
+    }
+    const Eigen::Vector3d& previous_of_v = previous; // target of prev(h), i.e. source(h)
+
+    if (!newell.allFinite() || !vertex_sum.allFinite()) // a non-finite point: no normal, no weight
+      continue;
+    const double twice_area = newell.norm();
+    if (!(twice_area > 0.)) // degenerate face: no normal, no weight
+      continue;
+
+    switch (method) {
+      case Vertex_normal_method::area_weighted:
+        // area * unit normal = newell / 2; the common factor does not matter
+        sum += newell;
+        break;
+
+      case Vertex_normal_method::angle_weighted: {
+        const Eigen::Vector3d nf = newell / twice_area;
+        if (next_of_v == zero || previous_of_v == zero) // zero-length edge at v
+          break;
+        // Angle from the edge to the next vertex to the edge to the previous one,
+        // counter-clockwise around nf: in [0, 2 pi), larger than pi at a reflex vertex.
+        double angle = std::atan2(next_of_v.cross(previous_of_v).dot(nf), next_of_v.dot(previous_of_v));
+        if (angle < 0.)
+          angle += two_pi;
+        sum += angle * nf;
+        break;
+      }
+
+      case Vertex_normal_method::centroid_weighted: {
+        const double d2 = (vertex_sum / double(n_vertices)).squaredNorm(); // |G_f - v|^2 / scale^2
+        const double w = 1. / d2;
+        if (std::isfinite(w))
+          sum += (w / twice_area) * newell;
+        else // centroid at v (possible for non-convex polygons): infinite weight
+          sum_infinite_weights += newell / twice_area;
+        break;
+      }
+
+      default: // quadric_fit was refused above
+        break;
+    }
+  }
+
+  // Faces of infinite weight (centroid at v) dominate all others: this is the limit
+  // of the weighted average as a centroid tends to v.
+  if (sum_infinite_weights != zero)
+    sum = sum_infinite_weights;
+
+  // Normalise without overflow: first by the largest component.
+  const double largest = sum.cwiseAbs().maxCoeff();
+  if (!std::isfinite(largest))
+    return nan;
+  if (!(largest > 0.))
+    return zero;
+  const Eigen::Vector3d s = sum / largest;
+  return s / s.norm();
+}
+
+} // namespace internal
+
+} // namespace Curvature_estimation
+} // namespace CGAL
+
+#endif // CGAL_CURVATURE_ESTIMATION_INTERNAL_FACE_AVERAGE_NORMAL_H
