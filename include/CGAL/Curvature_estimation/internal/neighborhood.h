@@ -3,6 +3,7 @@
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_NEIGHBORHOOD_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_NEIGHBORHOOD_H
 
+#include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <boost/graph/graph_traits.hpp>
@@ -31,12 +32,29 @@ public:
     ring_ends_.clear();
     vertices_.push_back(center);
     ring_ends_.push_back(1);
+    center_on_border_ = false;
+    has_face_.clear();
+    std::size_t incoming_count = 0;
     const halfedge_descriptor h = halfedge(center, g);
     if (h != boost::graph_traits<FaceGraph>::null_halfedge())
-      for (halfedge_descriptor incoming : halfedges_around_target(h, g))
+      for (halfedge_descriptor incoming : halfedges_around_target(h, g)) {
         add_if_new(source(incoming, g));
+        has_face_.push_back(!is_border(incoming, g));
+        center_on_border_ = center_on_border_ || is_border(incoming, g) || is_border(opposite(incoming, g), g);
+        ++incoming_count;
+      }
     ring_ends_.push_back(vertices_.size());
+    one_ring_in_fan_order_ = incoming_count + 1 == vertices_.size();
   }
+
+  // Whether the 1-ring is in the order of the incoming halfedges h_k around the
+  // center, one vertex each (not so at a non-manifold vertex). Then the face of
+  // h_k, where it exists, has the corner (source(h_k), center, source(h_{k+1})).
+  bool one_ring_in_fan_order() const { return one_ring_in_fan_order_; }
+  bool has_face(std::size_t k) const { return has_face_[k] != 0; }
+
+  // Whether the center has an incident border edge (found while gathering the 1-ring).
+  bool center_on_border() const { return center_on_border_; }
 
   // Adds the next ring; returns false when it is empty (the component is exhausted).
   bool extend(const FaceGraph& g)
@@ -70,6 +88,9 @@ private:
 
   std::vector<vertex_descriptor> vertices_;
   std::vector<std::size_t> ring_ends_;
+  std::vector<char> has_face_;  // per incoming halfedge of the center
+  bool center_on_border_ = false;
+  bool one_ring_in_fan_order_ = false;
 };
 
 } // namespace internal

@@ -11,8 +11,9 @@
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_QUADRIC_FIT_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_QUADRIC_FIT_H
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
+
+#include <cmath>
 
 #include <limits>
 
@@ -90,10 +91,9 @@ public:
     if (!scaling.allFinite())
       return false;
     const Normal_matrix scaled = scaling.asDiagonal() * normal_matrix_ * scaling.asDiagonal();
-    const Eigen::LLT<Normal_matrix> cholesky(scaled);
-    if (cholesky.info() != Eigen::Success)
+    Normal_matrix scaled_inverse;
+    if (!invert(scaled, scaled_inverse))
       return false;
-    const Normal_matrix scaled_inverse = cholesky.solve(Normal_matrix::Identity());
     condition_ = scaled.cwiseAbs().colwise().sum().maxCoeff() * scaled_inverse.cwiseAbs().colwise().sum().maxCoeff();
     if (!(condition_ <= max_condition))
       return false;
@@ -118,6 +118,49 @@ public:
   const Point& gradient() const { return gradient_; }
 
 private:
+  // The inverse of a symmetric matrix, by Cholesky factorisation in plain loops
+  // (fully unrolled for these fixed sizes; Eigen's small triangular solves are
+  // several times slower); false if it is not positive definite.
+  static bool invert(const Normal_matrix& m, Normal_matrix& inverse)
+  {
+    constexpr int n = unknowns;
+    double L[n][n] = {};
+    for (int j = 0; j < n; ++j) {
+      double diagonal = m(j, j);
+      for (int k = 0; k < j; ++k)
+        diagonal -= L[j][k] * L[j][k];
+      if (!(diagonal > 0))
+        return false;
+      L[j][j] = std::sqrt(diagonal);
+      for (int i = j + 1; i < n; ++i) {
+        double value = m(i, j);
+        for (int k = 0; k < j; ++k)
+          value -= L[i][k] * L[j][k];
+        L[i][j] = value / L[j][j];
+      }
+    }
+    // L^-1, lower triangular, then inverse = L^-T L^-1.
+    double Linv[n][n] = {};
+    for (int j = 0; j < n; ++j) {
+      Linv[j][j] = 1 / L[j][j];
+      for (int i = j + 1; i < n; ++i) {
+        double value = 0;
+        for (int k = j; k < i; ++k)
+          value -= L[i][k] * Linv[k][j];
+        Linv[i][j] = value / L[i][i];
+      }
+    }
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j <= i; ++j) {
+        double value = 0;
+        for (int k = i; k < n; ++k)
+          value += Linv[k][i] * Linv[k][j];
+        inverse(i, j) = value;
+        inverse(j, i) = value;
+      }
+    return true;
+  }
+
   Normal_matrix normal_matrix_;
   Row right_hand_side_;
   int size_ = 0;

@@ -25,6 +25,33 @@ struct Graph_curvature
   Eigen::Matrix<double, N, 1> normal;
 };
 
+// Eigenvalues (ascending) and unit eigenvectors (columns) of a symmetric matrix.
+template <int D>
+void symmetric_eigen(const Eigen::Matrix<double, D, D>& m, Eigen::Matrix<double, D, 1>& values,
+                     Eigen::Matrix<double, D, D>& vectors)
+{
+  if constexpr (D == 2) {
+    // Closed form: Eigen's direct 2x2 solver costs more than the whole fit.
+    const double a = m(0, 0), b = m(0, 1), c = m(1, 1);
+    const double mean = 0.5 * (a + c);
+    const double radius = std::hypot(0.5 * (a - c), b);
+    values << mean - radius, mean + radius;
+    // An eigenvector of the larger eigenvalue: (b, l - a) or (l - c, b), whichever
+    // is the better conditioned; the other is orthogonal.
+    const double l = values[1];
+    Eigen::Vector2d larger = std::abs(l - a) > std::abs(l - c) ? Eigen::Vector2d(b, l - a) : Eigen::Vector2d(l - c, b);
+    const double length = larger.norm();
+    larger = length > 0 ? Eigen::Vector2d(larger / length) : Eigen::Vector2d(1, 0);  // umbilic: any frame
+    vectors.col(1) = larger;
+    vectors.col(0) = Eigen::Vector2d(-larger.y(), larger.x());
+  } else {
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, D, D>> eigen;
+    eigen.computeDirect(m);
+    values = eigen.eigenvalues();
+    vectors = eigen.eigenvectors();
+  }
+}
+
 // The graph of h(x) = g.x + 1/2 x^T C x over the frame (origin, columns of
 // `tangents`, `normal`): first fundamental form G = I + g g^T, second C / l with
 // l = sqrt(1 + |g|^2); the shape operator G^-1 C / l is diagonalised in the
@@ -40,20 +67,28 @@ Graph_curvature<N> graph_curvature(const Eigen::Matrix<double, N - 1, N - 1>& he
   using Square = Eigen::Matrix<double, D, D>;
 
   const double gradient_norm2 = gradient.squaredNorm();
+  Graph_curvature<N> result;
+  Eigen::Matrix<double, D, 1> eigenvalues;
+  Square eigenvectors;
+  if (gradient_norm2 == 0) {
+    // The frame's normal is the graph's: the metric is the identity.
+    symmetric_eigen<D>(hessian, eigenvalues, eigenvectors);
+    result.curvatures = -eigenvalues;
+    result.directions = tangents * eigenvectors;
+    result.normal = normal;
+    return result;
+  }
   const double l = std::sqrt(1.0 + gradient_norm2);
-  Square inverse_sqrt_metric = Square::Identity();
-  if (gradient_norm2 > 0)
-    inverse_sqrt_metric += ((1.0 / l - 1.0) / gradient_norm2) * (gradient * gradient.transpose());
+  const Square inverse_sqrt_metric =
+    Square::Identity() + ((1.0 / l - 1.0) / gradient_norm2) * (gradient * gradient.transpose());
 
   const Square symmetric = inverse_sqrt_metric * hessian * inverse_sqrt_metric / l;
-  Eigen::SelfAdjointEigenSolver<Square> eigen;
-  eigen.computeDirect(symmetric);
+  symmetric_eigen<D>(symmetric, eigenvalues, eigenvectors);
 
-  Graph_curvature<N> result;
   // Ascending eigenvalues of the upward shape operator are, negated, the
   // curvatures in decreasing order.
-  result.curvatures = -eigen.eigenvalues();
-  const Square parameter_directions = inverse_sqrt_metric * eigen.eigenvectors();
+  result.curvatures = -eigenvalues;
+  const Square parameter_directions = inverse_sqrt_metric * eigenvectors;
   result.directions = tangents * parameter_directions +
                       normal * (gradient.transpose() * parameter_directions);
   result.normal = (normal - tangents * gradient) / l;
