@@ -1,0 +1,452 @@
+// paraboloid_fitting_curvatures on meshes: reproduction of Hamann's Table 1,
+// convergence and sign on closed surfaces, invariances, mesh-type independence,
+// concurrency, irregular meshes and bad input.
+#include <CGAL/Curvature_estimation/paraboloid_fitting.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <gtest/gtest.h>
+
+#include "test_surfaces.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <map>
+#include <vector>
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Vector = Kernel::Vector_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+using Polyhedron = CGAL::Polyhedron_3<Kernel>;
+using Curvatures = CGAL::Curvature_estimation::Principal_curvatures_and_directions<Kernel>;
+using CGAL::Curvature_estimation::Estimation_status;
+namespace CE = CGAL::Curvature_estimation;
+namespace params = CGAL::Curvature_estimation::parameters;
+
+// Per-vertex results in the soup's vertex order.
+struct Estimates
+{
+  std::vector<Curvatures> principal;
+  std::vector<double> mean, gaussian;
+  std::vector<Estimation_status> status;
+};
+
+// Runs the estimator on a Surface_mesh with every output requested; `extra`
+// adds parameters (a normal map, rings, ...).
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename Extra>
+Estimates estimate(const Mesh& mesh, const Extra& extra)
+{
+  Mesh& m = const_cast<Mesh&>(mesh);
+  auto principal = m.add_property_map<Mesh::Vertex_index, Curvatures>("v:test_pcd").first;
+  auto mean = m.add_property_map<Mesh::Vertex_index, double>("v:test_H").first;
+  auto gaussian = m.add_property_map<Mesh::Vertex_index, double>("v:test_K").first;
+  auto status = m.add_property_map<Mesh::Vertex_index, Estimation_status>("v:test_status").first;
+  CE::paraboloid_fitting_curvatures<ConcurrencyTag>(
+    mesh, extra.vertex_principal_curvatures_and_directions_map(principal)
+            .vertex_mean_curvature_map(mean)
+            .vertex_Gaussian_curvature_map(gaussian)
+            .vertex_estimation_status_map(status));
+  Estimates e;
+  for (Mesh::Vertex_index v : vertices(mesh)) {
+    e.principal.push_back(principal[v]);
+    e.mean.push_back(mean[v]);
+    e.gaussian.push_back(gaussian[v]);
+    e.status.push_back(status[v]);
+  }
+  m.remove_property_map(principal);
+  m.remove_property_map(mean);
+  m.remove_property_map(gaussian);
+  m.remove_property_map(status);
+  return e;
+}
+
+Estimates estimate(const Mesh& mesh) { return estimate(mesh, params::default_values()); }
+
+struct Table_errors
+{
+  ce_test::Error_accumulator k_max, k_min, mean, gaussian;
+};
+
+// Errors against the exact curvature; `include(i)` selects vertices.
+template <typename Include>
+Table_errors errors(const Estimates& e, const std::vector<ce_test::Exact_curvature>& exact, Include include)
+{
+  Table_errors t;
+  for (std::size_t i = 0; i < exact.size(); ++i) {
+    if (!include(i))
+      continue;
+    t.k_max.add(exact[i].k_max, e.principal[i].max_curvature);
+    t.k_min.add(exact[i].k_min, e.principal[i].min_curvature);
+    t.mean.add(exact[i].H, e.mean[i]);
+    t.gaussian.add(exact[i].K, e.gaussian[i]);
+  }
+  return t;
+}
+
+Table_errors all_vertex_errors(const Estimates& e, const std::vector<ce_test::Exact_curvature>& exact)
+{
+  return errors(e, exact, [](std::size_t) { return true; });
+}
+
+// An exact normal map for a soup's points.
+auto exact_normal_map(Mesh& mesh, const std::vector<ce_test::Exact_curvature>& exact)
+{
+  auto normals = mesh.add_property_map<Mesh::Vertex_index, Vector>("v:exact_normal").first;
+  std::size_t i = 0;
+  for (Mesh::Vertex_index v : vertices(mesh)) {
+    const Eigen::Vector3d& n = exact[i++].normal;
+    normals[v] = Vector(n.x(), n.y(), n.z());
+  }
+  return normals;
+}
+
+void print_table_row(const char* name, const Table_errors& t, const ce_test::Table1_row& paper)
+{
+  std::printf("  %-14s k1 %.6f (%.2fx)  k2 %.6f (%.2fx)  H %.6f (%.2fx)  K %.6f (%.2fx)\n", name,
+              t.k_max.stats().rms, t.k_max.stats().rms / paper.k1, t.k_min.stats().rms,
+              t.k_min.stats().rms / paper.k2, t.mean.stats().rms, t.mean.stats().rms / paper.H,
+              t.gaussian.stats().rms, t.gaussian.stats().rms / paper.K);
+}
+
+// Hamann 1993 Table 1 / thesis Table 4.1: 51 x 51 grid over [-1, 1]^2, quads
+// split along the (i+1, j)-(i, j+1) diagonal, RMS over all 2601 vertices.
+// The paper's k1 column is its smaller curvature with upward normals, i.e. minus
+// our k_max, so its RMS compares with our k_max error (and k2 with k_min).
+class Hamann_table1 : public ::testing::Test
+{
+protected:
+  static constexpr std::size_t n = 51;
+  const std::vector<ce_test::Graph_function> functions = ce_test::hamann_table1_functions();
+  const std::vector<ce_test::Table1_row> published = ce_test::hamann_table1_published();
+};
+
+TEST_F(Hamann_table1, ExactNormalsReproducePublishedRmsWithin2Percent)
+{
+  // The paper's reproduction setting: every boundary vertex fits its 1-ring plus 2-ring.
+  std::printf("Hamann Table 1, exact normals, boundary vertices on 2 rings (ours, ratio to the paper):\n");
+  for (std::size_t f = 0; f < functions.size(); ++f) {
+    const ce_test::Soup soup = ce_test::grid_graph_soup(functions[f], n);
+    Mesh mesh = ce_test::to_mesh<Mesh>(soup);
+    const auto exact = ce_test::graph_curvatures(functions[f], soup);
+    const Estimates e = estimate(mesh, params::vertex_normal_map(exact_normal_map(mesh, exact)).boundary_neighborhood_rings(2));
+    const Table_errors t = all_vertex_errors(e, exact);
+    const ce_test::Table1_row& paper = published[f];
+    if (paper.k1 == 0) {  // the plane: exact up to rounding
+      EXPECT_LT(t.k_max.stats().max, 1e-12) << functions[f].name;
+      EXPECT_LT(t.k_min.stats().max, 1e-12) << functions[f].name;
+      EXPECT_LT(t.mean.stats().max, 1e-12) << functions[f].name;
+      EXPECT_LT(t.gaussian.stats().max, 1e-12) << functions[f].name;
+      std::printf("  %-14s max error %.1e\n", functions[f].name.c_str(), t.k_max.stats().max);
+      continue;
+    }
+    print_table_row(functions[f].name.c_str(), t, paper);
+    EXPECT_NEAR(t.k_max.stats().rms, paper.k1, 0.02 * paper.k1) << functions[f].name << " k1";
+    EXPECT_NEAR(t.k_min.stats().rms, paper.k2, 0.02 * paper.k2) << functions[f].name << " k2";
+    EXPECT_NEAR(t.mean.stats().rms, paper.H, 0.02 * paper.H) << functions[f].name << " H";
+    EXPECT_NEAR(t.gaussian.stats().rms, paper.K, 0.02 * paper.K) << functions[f].name << " K";
+  }
+}
+
+TEST_F(Hamann_table1, DefaultEstimatedNormalsWithin1_5TimesPublishedExactNormalRms)
+{
+  // No normal map, no ring setting: the call a user makes. Also printed: the same
+  // with the paper's boundary 2-ring setting, for the record.
+  std::printf("Hamann Table 1, default call (estimated normals), ratio to the paper's exact-normal RMS:\n");
+  for (std::size_t f = 0; f < functions.size(); ++f) {
+    const ce_test::Soup soup = ce_test::grid_graph_soup(functions[f], n);
+    const Mesh mesh = ce_test::to_mesh<Mesh>(soup);
+    const auto exact = ce_test::graph_curvatures(functions[f], soup);
+    const Estimates e = estimate(mesh);
+    const Table_errors t = all_vertex_errors(e, exact);
+    const ce_test::Table1_row& paper = published[f];
+    for (Estimation_status s : e.status)
+      ASSERT_NE(s, Estimation_status::not_estimable) << functions[f].name;
+    if (paper.k1 == 0) {
+      EXPECT_LT(t.k_max.stats().max, 1e-10) << functions[f].name;
+      EXPECT_LT(t.k_min.stats().max, 1e-10) << functions[f].name;
+      std::printf("  %-14s max error %.1e\n", functions[f].name.c_str(), t.k_max.stats().max);
+      continue;
+    }
+    print_table_row(functions[f].name.c_str(), t, paper);
+    EXPECT_LE(t.k_max.stats().rms, 1.5 * paper.k1) << functions[f].name << " k1";
+    EXPECT_LE(t.k_min.stats().rms, 1.5 * paper.k2) << functions[f].name << " k2";
+    EXPECT_LE(t.mean.stats().rms, 1.5 * paper.H) << functions[f].name << " H";
+    EXPECT_LE(t.gaussian.stats().rms, 1.5 * paper.K) << functions[f].name << " K";
+  }
+  std::printf("Same, with boundary vertices on 2 rings (the paper's setting):\n");
+  for (std::size_t f = 1; f < functions.size(); ++f) {
+    const ce_test::Soup soup = ce_test::grid_graph_soup(functions[f], n);
+    const Mesh mesh = ce_test::to_mesh<Mesh>(soup);
+    const Estimates e = estimate(mesh, params::boundary_neighborhood_rings(2));
+    print_table_row(functions[f].name.c_str(), all_vertex_errors(e, ce_test::graph_curvatures(functions[f], soup)),
+                    published[f]);
+  }
+}
+
+TEST_F(Hamann_table1, AreaWeightedNormalsAreFarWorseAtTheBoundary)
+{
+  // Why the default is not a face average: the one-sided normal tilts by O(h)
+  // and the one-sided platelet turns that into an O(1) curvature error.
+  const ce_test::Graph_function& trig = functions[8];
+  const ce_test::Soup soup = ce_test::grid_graph_soup(trig, n);
+  const Mesh mesh = ce_test::to_mesh<Mesh>(soup);
+  const auto exact = ce_test::graph_curvatures(trig, soup);
+  const Estimates area = estimate(mesh, params::vertex_normal_method(CE::Vertex_normal_method::area_weighted));
+  const Estimates fitted = estimate(mesh);
+  const double area_rms = all_vertex_errors(area, exact).mean.stats().rms;
+  const double fitted_rms = all_vertex_errors(fitted, exact).mean.stats().rms;
+  std::printf("trigonometric, H RMS: area-weighted normals %.6f, default fitted normals %.6f\n", area_rms, fitted_rms);
+  EXPECT_GT(area_rms, 10 * fitted_rms);
+}
+
+TEST(Paraboloid_fitting, SphereHasPositiveCurvatureOneOverRadiusAndConverges)
+{
+  const double radius = 2.0;
+  double previous = std::numeric_limits<double>::infinity();
+  for (unsigned level = 2; level <= 4; ++level) {
+    const ce_test::Soup soup = ce_test::sphere_soup(radius, level);
+    const Mesh mesh = ce_test::to_mesh<Mesh>(soup);
+    const Estimates e = estimate(mesh);
+    ce_test::Error_accumulator mean_error;
+    for (std::size_t i = 0; i < e.mean.size(); ++i) {
+      ASSERT_NE(e.status[i], Estimation_status::not_estimable);
+      EXPECT_GE(e.principal[i].max_curvature, e.principal[i].min_curvature);
+      // The sign convention: outward normals, positive curvature.
+      EXPECT_GT(e.principal[i].min_curvature, 0);
+      mean_error.add(1 / radius, e.mean[i]);
+    }
+    std::printf("icosphere level %u: H RMS error %.2e (exact 1/r = %.3f)\n", level, mean_error.stats().rms, 1 / radius);
+    EXPECT_LT(mean_error.stats().rms, 0.6 * previous);
+    previous = mean_error.stats().rms;
+  }
+}
+
+TEST(Paraboloid_fitting, DirectionsAreUnitOrthogonalTangentAndFollowTheTorus)
+{
+  const double R = 3, r = 1;
+  const ce_test::Soup soup = ce_test::torus_soup(R, r, 120, 60);
+  const Mesh mesh = ce_test::to_mesh<Mesh>(soup);
+  const auto exact = ce_test::torus_curvatures(R, r, soup);
+  const Estimates e = estimate(mesh);
+  ce_test::Error_accumulator k_max, k_min, direction;
+  for (std::size_t i = 0; i < exact.size(); ++i) {
+    const Curvatures& c = e.principal[i];
+    const Eigen::Vector3d d_max(c.max_direction.x(), c.max_direction.y(), c.max_direction.z());
+    const Eigen::Vector3d d_min(c.min_direction.x(), c.min_direction.y(), c.min_direction.z());
+    EXPECT_NEAR(d_max.norm(), 1, 1e-12);
+    EXPECT_NEAR(d_min.norm(), 1, 1e-12);
+    EXPECT_NEAR(d_max.dot(d_min), 0, 1e-12);
+    EXPECT_NEAR(d_max.dot(exact[i].normal), 0, 0.02);  // tangent to the surface, up to the normal's error
+    k_max.add(exact[i].k_max, c.max_curvature);
+    k_min.add(exact[i].k_min, c.min_curvature);
+    // Principal directions are defined up to sign: compare |cos|.
+    direction.add(1 - std::abs(d_max.dot(exact[i].d_max)));
+  }
+  std::printf("torus 120x60: k_max RMS %.2e, k_min RMS %.2e, max 1-|cos| of d_max %.2e\n", k_max.stats().rms,
+              k_min.stats().rms, direction.stats().max);
+  EXPECT_LT(k_max.stats().rms, 1e-2);
+  EXPECT_LT(k_min.stats().rms, 1e-2);
+  EXPECT_LT(direction.stats().max, 1e-3);
+}
+
+// A jittered grid of a smooth graph, the common input of the invariance tests.
+ce_test::Soup jittered_exponential(std::size_t n)
+{
+  return ce_test::jittered_grid_graph_soup(ce_test::hamann_table1_functions()[7], n, -1, 1, 0.2, 7);
+}
+
+Eigen::Matrix3d rotation(double a, double b, double c)
+{
+  return (Eigen::AngleAxisd(a, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(b, Eigen::Vector3d::UnitY()) *
+          Eigen::AngleAxisd(c, Eigen::Vector3d::UnitX())).toRotationMatrix();
+}
+
+TEST(Paraboloid_fitting, InvariantUnderRigidMotions)
+{
+  const ce_test::Soup soup = jittered_exponential(25);
+  const Mesh mesh = ce_test::to_mesh<Mesh>(soup);
+  const Estimates reference = estimate(mesh);
+
+  const Eigen::Matrix3d Q = rotation(0.7, -1.1, 2.3);
+  const Eigen::Vector3d t(10, -20, 5);
+  ce_test::Soup moved = soup;
+  for (Eigen::Vector3d& p : moved.points)
+    p = Q * p + t;
+  const Estimates e = estimate(ce_test::to_mesh<Mesh>(moved));
+
+  for (std::size_t i = 0; i < soup.points.size(); ++i) {
+    ASSERT_EQ(e.status[i], reference.status[i]);
+    const double scale = 1 + std::abs(reference.principal[i].max_curvature);
+    EXPECT_NEAR(e.principal[i].max_curvature, reference.principal[i].max_curvature, 1e-9 * scale);
+    EXPECT_NEAR(e.principal[i].min_curvature, reference.principal[i].min_curvature, 1e-9 * scale);
+    const Vector& d = reference.principal[i].max_direction;
+    const Eigen::Vector3d rotated = Q * Eigen::Vector3d(d.x(), d.y(), d.z());
+    const Vector& m = e.principal[i].max_direction;
+    if (std::abs(reference.principal[i].max_curvature - reference.principal[i].min_curvature) > 1e-3) {
+      EXPECT_NEAR(std::abs(rotated.dot(Eigen::Vector3d(m.x(), m.y(), m.z()))), 1, 1e-8);
+    }
+  }
+}
+
+TEST(Paraboloid_fitting, UniformScalingScalesCurvaturesInversely)
+{
+  const ce_test::Soup soup = jittered_exponential(25);
+  const Estimates reference = estimate(ce_test::to_mesh<Mesh>(soup));
+  for (double s : {1e-6, 1e6}) {
+    ce_test::Soup scaled = soup;
+    for (Eigen::Vector3d& p : scaled.points)
+      p *= s;
+    const Estimates e = estimate(ce_test::to_mesh<Mesh>(scaled));
+    for (std::size_t i = 0; i < soup.points.size(); ++i) {
+      ASSERT_EQ(e.status[i], reference.status[i]) << "scale " << s;
+      const double scale = 1 + std::abs(reference.principal[i].max_curvature);
+      EXPECT_NEAR(e.principal[i].max_curvature * s, reference.principal[i].max_curvature, 1e-9 * scale);
+      EXPECT_NEAR(e.principal[i].min_curvature * s, reference.principal[i].min_curvature, 1e-9 * scale);
+      EXPECT_NEAR(e.gaussian[i] * s * s, reference.gaussian[i], 1e-9 * scale * scale);
+    }
+  }
+}
+
+TEST(Paraboloid_fitting, SurfaceMeshAndPolyhedronGiveTheSameNumbers)
+{
+  const ce_test::Soup soup = jittered_exponential(21);
+  const Estimates reference = estimate(ce_test::to_mesh<Mesh>(soup));
+
+  const Polyhedron polyhedron = ce_test::to_mesh<Polyhedron>(soup);
+  using Vertex = boost::graph_traits<Polyhedron>::vertex_descriptor;
+  std::map<Vertex, Curvatures> principal;
+  std::map<Vertex, Estimation_status> status;
+  CE::paraboloid_fitting_curvatures(
+    polyhedron, params::vertex_principal_curvatures_and_directions_map(boost::make_assoc_property_map(principal))
+                  .vertex_estimation_status_map(boost::make_assoc_property_map(status)));
+  std::size_t i = 0;
+  for (Vertex v : vertices(polyhedron)) {
+    ASSERT_EQ(status[v], reference.status[i]);
+    const double scale = 1 + std::abs(reference.principal[i].max_curvature);
+    EXPECT_NEAR(principal[v].max_curvature, reference.principal[i].max_curvature, 1e-12 * scale);
+    EXPECT_NEAR(principal[v].min_curvature, reference.principal[i].min_curvature, 1e-12 * scale);
+    ++i;
+  }
+  EXPECT_EQ(i, soup.points.size());
+}
+
+#ifdef CGAL_LINKED_WITH_TBB
+TEST(Paraboloid_fitting, SequentialAndParallelAreIdentical)
+{
+  // More vertices than one parallel block, so that blocks are exercised.
+  const ce_test::Soup soup = ce_test::jittered_grid_graph_soup(ce_test::hamann_table1_functions()[8], 200, -1, 1, 0.2, 3);
+  const Mesh mesh = ce_test::to_mesh<Mesh>(soup);
+  const Estimates sequential = estimate<CGAL::Sequential_tag>(mesh, params::default_values());
+  const Estimates parallel = estimate<CGAL::Parallel_tag>(mesh, params::default_values());
+  for (std::size_t i = 0; i < soup.points.size(); ++i) {
+    ASSERT_EQ(sequential.status[i], parallel.status[i]);
+    // Bitwise: the same arithmetic per vertex, whatever the thread.
+    ASSERT_EQ(std::memcmp(&sequential.principal[i], &parallel.principal[i], sizeof(Curvatures)), 0) << i;
+  }
+}
+#endif
+
+TEST(Paraboloid_fitting, IrregularDelaunayMeshIsFiniteEverywhereAndConverges)
+{
+  const ce_test::Graph_function f = ce_test::hamann_table1_functions()[8];
+  double previous_rms = 0, previous_h = 0;
+  for (std::size_t points : {1000, 4000, 16000}) {
+    const ce_test::Soup soup = ce_test::delaunay_graph_soup(f, points, -1, 1, 11);
+    const Mesh mesh = ce_test::to_mesh<Mesh>(soup);
+    const auto exact = ce_test::graph_curvatures(f, soup);
+    const Estimates e = estimate(mesh);
+    std::size_t widened = 0;
+    for (std::size_t i = 0; i < e.status.size(); ++i) {
+      ASSERT_NE(e.status[i], Estimation_status::not_estimable) << i;
+      ASSERT_TRUE(std::isfinite(e.mean[i]) && std::isfinite(e.gaussian[i])) << i;
+      widened += e.status[i] == Estimation_status::widened;
+    }
+    std::vector<bool> border(soup.points.size());
+    std::size_t i = 0;
+    for (Mesh::Vertex_index v : vertices(mesh))
+      border[i++] = static_cast<bool>(CGAL::is_border(v, mesh));
+    const Table_errors all = all_vertex_errors(e, exact);
+    const Table_errors interior = errors(e, exact, [&](std::size_t k) { return !border[k]; });
+    const double h = ce_test::mean_edge_length(soup);
+    std::printf("Delaunay %5zu points (h %.4f, %zu widened): H RMS all %.2e interior %.2e, K RMS all %.2e interior %.2e",
+                points, h, widened, all.mean.stats().rms, interior.mean.stats().rms, all.gaussian.stats().rms,
+                interior.gaussian.stats().rms);
+    if (previous_rms > 0)
+      std::printf(", interior H order %.2f", ce_test::observed_order(previous_rms, interior.mean.stats().rms, previous_h, h));
+    std::printf("\n");
+    // Degree-2 fits on irregular stencils converge at about first order.
+    if (previous_rms > 0) {
+      EXPECT_GT(ce_test::observed_order(previous_rms, interior.mean.stats().rms, previous_h, h), 0.7);
+    }
+    previous_rms = interior.mean.stats().rms;
+    previous_h = h;
+  }
+}
+
+TEST(Paraboloid_fitting, DegenerateInputGetsNotEstimableAndNaNWithoutHarmingNeighbours)
+{
+  // A grid of a paraboloid, plus: an isolated vertex, a vertex with NaN
+  // coordinates in the grid, and a lone triangle (too few points even widened).
+  const ce_test::Soup soup = ce_test::grid_graph_soup(ce_test::hamann_table1_functions()[3], 11);
+  Mesh mesh = ce_test::to_mesh<Mesh>(soup);
+  const Mesh::Vertex_index isolated = mesh.add_vertex(Point(5, 5, 5));
+  const Mesh::Vertex_index a = mesh.add_vertex(Point(10, 0, 0)), b = mesh.add_vertex(Point(11, 0, 0)),
+                           c = mesh.add_vertex(Point(10, 1, 0));
+  mesh.add_face(a, b, c);
+  const Mesh::Vertex_index broken(static_cast<Mesh::size_type>(5 + 11 * 5));  // the grid's centre
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  mesh.point(broken) = Point(nan, 0, 0);
+
+  const Estimates e = estimate(mesh);
+  for (Mesh::Vertex_index v : {isolated, a, b, c, broken}) {
+    EXPECT_EQ(e.status[v], Estimation_status::not_estimable) << v;
+    EXPECT_TRUE(std::isnan(e.principal[v].max_curvature) && std::isnan(e.principal[v].min_curvature));
+    EXPECT_TRUE(std::isnan(e.mean[v]) && std::isnan(e.gaussian[v]));
+    EXPECT_TRUE(std::isnan(e.principal[v].max_direction.x()));
+  }
+  // The NaN vertex's neighbours still get finite estimates from their other neighbours.
+  for (Mesh::Vertex_index w : vertices_around_target(halfedge(broken, mesh), mesh)) {
+    EXPECT_NE(e.status[w], Estimation_status::not_estimable) << w;
+    EXPECT_TRUE(std::isfinite(e.mean[w])) << w;
+  }
+
+  Mesh empty;
+  EXPECT_NO_THROW(estimate(empty));
+}
+
+TEST(Paraboloid_fitting, ExactNormalsOnAGridWidenOnlyWhereTheOneRingIsIllConditioned)
+{
+  // With exact normals the interior 1-ring of the grid is well-conditioned and
+  // stays 1-ring; the corners with two neighbours cannot be fitted on their
+  // 1-ring and widen. No vertex fails.
+  const ce_test::Graph_function f = ce_test::hamann_table1_functions()[4];
+  const std::size_t n = 21;
+  const ce_test::Soup soup = ce_test::grid_graph_soup(f, n);
+  Mesh mesh = ce_test::to_mesh<Mesh>(soup);
+  const auto exact = ce_test::graph_curvatures(f, soup);
+  const Estimates e = estimate(mesh, params::vertex_normal_map(exact_normal_map(mesh, exact)));
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t i = 0; i < n; ++i) {
+      const Estimation_status s = e.status[i + n * j];
+      const bool interior = i > 0 && j > 0 && i + 1 < n && j + 1 < n;
+      if (interior) {
+        EXPECT_EQ(s, Estimation_status::ok) << i << ' ' << j;
+      } else {
+        EXPECT_NE(s, Estimation_status::not_estimable) << i << ' ' << j;
+      }
+    }
+  EXPECT_EQ(e.status[0], Estimation_status::widened);              // corner (0, 0): two neighbours
+  EXPECT_EQ(e.status[n * n - 1], Estimation_status::widened);      // corner (n-1, n-1)
+}
+
+}  // namespace
