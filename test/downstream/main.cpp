@@ -1,5 +1,5 @@
 // Minimal consumer of CGAL::Curvature_estimation: compiles against the public
-// header and builds a tetrahedron. No C++ standard is set by the downstream
+// header and estimates curvature on an icosahedron. No C++ standard is set by the downstream
 // project: C++17 must come from the target's usage requirements, and so must
 // Eigen3 support (CGAL_EIGEN3_ENABLED from CGAL::Eigen3_support).
 #include <CGAL/Curvature_estimation.h>
@@ -21,10 +21,17 @@ int main()
   using Point = K::Point_3;
   using Mesh = CGAL::Surface_mesh<Point>;
 
-  Mesh mesh;
-  CGAL::make_tetrahedron(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1), mesh);
+  namespace CE = CGAL::Curvature_estimation;
 
-  const bool ok = mesh.number_of_vertices() == 4 && mesh.number_of_faces() == 4 &&
-                  CGAL::is_closed(mesh) && mesh.is_valid(false);
-  return ok ? 0 : 1;
+  Mesh mesh;
+  CGAL::make_icosahedron(mesh, Point(0, 0, 0), 2.0);
+  auto mean = mesh.add_property_map<Mesh::Vertex_index, double>("v:H").first;
+  auto status = mesh.add_property_map<Mesh::Vertex_index, CE::Estimation_status>("v:status").first;
+  CE::paraboloid_fitting_curvatures(mesh, CE::parameters::vertex_mean_curvature_map(mean).vertex_estimation_status_map(status));
+
+  // Every vertex of a convex closed surface with outward faces has H > 0.
+  for (Mesh::Vertex_index v : vertices(mesh))
+    if (status[v] == CE::Estimation_status::not_estimable || !(mean[v] > 0))
+      return 1;
+  return mesh.number_of_vertices() == 12 ? 0 : 1;
 }

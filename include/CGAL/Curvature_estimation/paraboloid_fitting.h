@@ -61,7 +61,7 @@ namespace Curvature_estimation {
 ///         identical results. In parallel the vertex point map is read from several
 ///         threads; every other map is read and written by the calling thread only.
 /// \tparam FaceGraph a model of `FaceGraph` (faces may be any polygons).
-/// \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// \tparam NamedParameters a sequence of named parameters, built with the functions of `CGAL::Curvature_estimation::parameters`
 ///
 /// \param g the mesh
 /// \param np an optional sequence of named parameters among the ones listed below
