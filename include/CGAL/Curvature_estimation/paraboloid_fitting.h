@@ -151,21 +151,9 @@ void paraboloid_fitting_curvatures(const FaceGraph& g,
   using FT = typename GT::FT;
   using Vector_3 = typename GT::Vector_3;
 
-  constexpr bool want_pcd = internal::has_parameter<NamedParameters, internal_np::vertex_principal_curvatures_and_directions_map_t>()
-#if CGAL_VERSION_MAJOR >= 6
-    || internal::has_parameter<NamedParameters, ::CGAL::internal_np::vertex_principal_curvatures_and_directions_map_t>()
-#endif
-    ;
-  constexpr bool want_mean = internal::has_parameter<NamedParameters, internal_np::vertex_mean_curvature_map_t>()
-#if CGAL_VERSION_MAJOR >= 6
-    || internal::has_parameter<NamedParameters, ::CGAL::internal_np::vertex_mean_curvature_map_t>()
-#endif
-    ;
-  constexpr bool want_gaussian = internal::has_parameter<NamedParameters, internal_np::vertex_Gaussian_curvature_map_t>()
-#if CGAL_VERSION_MAJOR >= 6
-    || internal::has_parameter<NamedParameters, ::CGAL::internal_np::vertex_Gaussian_curvature_map_t>()
-#endif
-    ;
+  constexpr bool want_pcd = internal::has_vertex_principal_curvatures_and_directions_map<NamedParameters>();
+  constexpr bool want_mean = internal::has_vertex_mean_curvature_map<NamedParameters>();
+  constexpr bool want_gaussian = internal::has_vertex_Gaussian_curvature_map<NamedParameters>();
   constexpr bool want_status = internal::has_parameter<NamedParameters, internal_np::vertex_estimation_status_map_t>();
   constexpr bool given_normals = internal::has_parameter<NamedParameters, ::CGAL::internal_np::vertex_normal_map_t>();
 

@@ -118,8 +118,15 @@ constexpr bool has_parameter()
 // The output maps that CGAL 6 also names (CGAL::internal_np::vertex_mean_curvature_map_t
 // and friends): on CGAL 6 a pack built with CGAL's own functions is accepted too.
 // This package's tag wins when both are given.
+// has_NAME<NP>() says whether the output was asked for; get_NAME(np) returns it.
 #if CGAL_VERSION_MAJOR >= 6
 #define CGAL_CE_CGAL6_ALIAS(OURS, THEIRS)                                                       \
+  template <typename NP>                                                                        \
+  constexpr bool has_##OURS()                                                                   \
+  {                                                                                             \
+    return has_parameter<NP, ::CGAL::Curvature_estimation::internal_np::OURS##_t>() ||          \
+           has_parameter<NP, ::CGAL::internal_np::THEIRS##_t>();                                \
+  }                                                                                             \
   template <typename NP>                                                                        \
   decltype(auto) get_##OURS(const NP& np)                                                       \
   {                                                                                             \
@@ -130,6 +137,11 @@ constexpr bool has_parameter()
   }
 #else
 #define CGAL_CE_CGAL6_ALIAS(OURS, THEIRS)                                                       \
+  template <typename NP>                                                                        \
+  constexpr bool has_##OURS()                                                                   \
+  {                                                                                             \
+    return has_parameter<NP, ::CGAL::Curvature_estimation::internal_np::OURS##_t>();           \
+  }                                                                                             \
   template <typename NP>                                                                        \
   decltype(auto) get_##OURS(const NP& np)                                                       \
   {                                                                                             \
