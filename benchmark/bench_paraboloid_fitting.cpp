@@ -84,7 +84,7 @@ void paraboloid_fitting(benchmark::State& state, Normals normals)
   m.remove_property_map(given);
 }
 
-// 0: bunny (35,947 vertices); 101, 317, 1001: grids of about 10k, 100k, 1M vertices.
+// 0: bunny00.off (37,706 vertices); 101, 317, 1001: grids of about 10k, 100k, 1M vertices.
 void sizes(benchmark::internal::Benchmark* b)
 {
   b->Arg(0)->Arg(101)->Arg(317)->Arg(1001)->Unit(benchmark::kMillisecond)->UseRealTime();
