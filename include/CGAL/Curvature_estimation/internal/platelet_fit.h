@@ -66,7 +66,7 @@ Platelet_fit_settings platelet_fit_settings(const NamedParameters& np, const cha
 // the quadratic one (well-posed cubic stencils show about 1e4, the ones that
 // are singular in the tangent plane above 1e16).
 constexpr int cubic_normal_min_rings = 3;
-constexpr double cubic_normal_condition_factor = 100;
+constexpr double cubic_normal_condition_factor = 1e3;
 
 struct Surface_estimate
 {
@@ -277,7 +277,7 @@ private:
   Platelet_fit_settings settings_;
   Ring_collector<FaceGraph> rings_;
   std::vector<Eigen::Vector3d> offsets_;  // scaled p_w - p_v, aligned with rings_.vertices()
-  Eigen::Vector3d center_;
+  Eigen::Vector3d center_ = Eigen::Vector3d::Zero();
   double scale_ = 1;
   bool on_border_ = false;
 };

@@ -55,10 +55,15 @@ public:
   {
     Row row;
     int column = 0;
-    // Quadratic terms first so that their coefficients do not depend on FirstOrder.
+    // Each order's monomials are scaled to be orthonormal coordinates of the
+    // symmetric tensor x (x) ... (x) x (sqrt of the multiplicity), so that a
+    // rotation of the tangent frame acts on each block of the normal matrix by an
+    // orthogonal matrix and the condition number does not depend on how the frame
+    // is turned in the tangent space. Quadratic terms first so that their
+    // coefficients do not depend on FirstOrder.
     for (int i = 0; i < D; ++i)
       for (int j = i; j < D; ++j)
-        row[column++] = (i == j ? 0.5 : 1.0) * x[i] * x[j];
+        row[column++] = (i == j ? 0.5 : half_sqrt2) * x[i] * x[j];
     if constexpr (FirstOrder == 1)
       for (int i = 0; i < D; ++i)
         row[column++] = x[i];
@@ -66,7 +71,7 @@ public:
       for (int i = 0; i < D; ++i)
         for (int j = i; j < D; ++j)
           for (int k = j; k < D; ++k)
-            row[column++] = x[i] * x[j] * x[k];
+            row[column++] = std::sqrt(double(multiplicity(i, j, k))) * x[i] * x[j] * x[k];
     normal_matrix_.noalias() += weight * row * row.transpose();
     right_hand_side_.noalias() += (weight * height) * row;
     ++size_;
@@ -76,34 +81,31 @@ public:
 
   // Solves the normal equations. Returns false when there are fewer samples than
   // unknowns, when the normal matrix is singular, or when its condition number
-  // exceeds `max_condition`: a stencil that is singular in the tangent space can
-  // still be solvable in floating point once tilted, and its solution is then
-  // garbage. The condition number is that of the matrix scaled to a unit
-  // diagonal (1-norm, exact for this small matrix), so that it measures how
-  // nearly dependent the samples make the terms, not how the terms are scaled:
-  // one threshold then serves fits of any order.
+  // (1-norm, exact for this small matrix) exceeds `max_condition`: a stencil that
+  // is singular in the tangent space can still be solvable in floating point once
+  // tilted, and its solution is then garbage. The caller scales the samples to a
+  // unit length (the mean 1-ring edge), so the number does not depend on the
+  // mesh's scale, and by the choice of monomials (see add) it depends on the turn
+  // of the frame by at most a factor of the number of unknowns.
   bool solve(double max_condition)
   {
     condition_ = std::numeric_limits<double>::infinity();
     if (size_ < unknowns)
       return false;
-    const Row scaling = normal_matrix_.diagonal().cwiseSqrt().cwiseInverse();
-    if (!scaling.allFinite())
+    Normal_matrix inverse;
+    if (!invert(normal_matrix_, inverse))
       return false;
-    const Normal_matrix scaled = scaling.asDiagonal() * normal_matrix_ * scaling.asDiagonal();
-    Normal_matrix scaled_inverse;
-    if (!invert(scaled, scaled_inverse))
-      return false;
-    condition_ = scaled.cwiseAbs().colwise().sum().maxCoeff() * scaled_inverse.cwiseAbs().colwise().sum().maxCoeff();
+    condition_ = normal_matrix_.cwiseAbs().colwise().sum().maxCoeff() * inverse.cwiseAbs().colwise().sum().maxCoeff();
     if (!(condition_ <= max_condition))
       return false;
 
-    const Row coefficients = scaling.asDiagonal() * (scaled_inverse * scaling.cwiseProduct(right_hand_side_));
+    const Row coefficients = inverse * right_hand_side_;
     int column = 0;
     for (int i = 0; i < D; ++i)
       for (int j = i; j < D; ++j) {
-        hessian_(i, j) = coefficients[column];
-        hessian_(j, i) = coefficients[column];
+        const double value = (i == j ? 1.0 : half_sqrt2) * coefficients[column];
+        hessian_(i, j) = value;
+        hessian_(j, i) = value;
         ++column;
       }
     if constexpr (FirstOrder == 1)
@@ -118,6 +120,11 @@ public:
   const Point& gradient() const { return gradient_; }
 
 private:
+  static constexpr double half_sqrt2 = 0.70710678118654752440;
+
+  // Number of distinct orderings of the indices i <= j <= k.
+  static constexpr int multiplicity(int i, int j, int k) { return i == k ? 1 : (i == j || j == k) ? 3 : 6; }
+
   // The inverse of a symmetric matrix, by Cholesky factorisation in plain loops
   // (fully unrolled for these fixed sizes; Eigen's small triangular solves are
   // several times slower); false if it is not positive definite.

@@ -1,0 +1,1052 @@
+// Tests of the numerical core shared by the paraboloid-fitting estimators, on
+// exact inputs and without any mesh:
+//   internal/tangent_frame.h   tangent_basis<N>
+//   internal/quadric_fit.h     Taylor_fit<D, FirstOrder, LastOrder>
+//   internal/shape_operator.h  graph_curvature<N>
+//
+// Every expected value is computed here from the mathematics of the input
+// (Hessians built from prescribed eigenvalues and eigenvectors, the closed-form
+// shape operator of a graph, an independent long-double condition number), never
+// from the code under test. Random numbers come from the raw output of
+// std::mt19937 with fixed seeds, so the inputs are the same on every platform.
+#include <CGAL/Curvature_estimation/internal/quadric_fit.h>
+#include <CGAL/Curvature_estimation/internal/shape_operator.h>
+#include <CGAL/Curvature_estimation/internal/tangent_frame.h>
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+#include <limits>
+#include <random>
+#include <vector>
+
+namespace {
+
+namespace CEI = CGAL::Curvature_estimation::internal;
+
+constexpr double pi = 3.14159265358979323846;
+
+template <int R, int C>
+using Mat = Eigen::Matrix<double, R, C>;
+template <int N>
+using Vec = Eigen::Matrix<double, N, 1>;
+
+// ---------------------------------------------------------------------------
+// Deterministic random numbers
+// ---------------------------------------------------------------------------
+
+class Random
+{
+public:
+  explicit Random(std::uint32_t seed) : gen_(seed) {}
+
+  // Uniform in [0, 1) with 53 random bits from two raw 32-bit outputs.
+  double uniform01()
+  {
+    const std::uint64_t a = gen_() >> 5; // 27 bits
+    const std::uint64_t b = gen_() >> 6; // 26 bits
+    return (static_cast<double>(a) * 67108864.0 + static_cast<double>(b)) / 9007199254740992.0;
+  }
+  double uniform(double lo, double hi) { return lo + (hi - lo) * uniform01(); }
+
+  template <int N>
+  Vec<N> in_cube(double half_width = 1.0)
+  {
+    Vec<N> v;
+    for (int i = 0; i < N; ++i)
+      v[i] = uniform(-half_width, half_width);
+    return v;
+  }
+
+  // A unit vector (rejection sampling in the unit ball, so no direction is favoured).
+  template <int N>
+  Vec<N> unit_vector()
+  {
+    for (;;) {
+      const Vec<N> v = in_cube<N>();
+      const double r = v.norm();
+      if (r > 0.1 && r <= 1.0)
+        return v / r;
+    }
+  }
+
+  // A rotation (orthogonal, determinant +1) by Gram-Schmidt of random vectors.
+  template <int N>
+  Mat<N, N> rotation()
+  {
+    Mat<N, N> q;
+    for (int j = 0; j < N;) {
+      Vec<N> v = unit_vector<N>();
+      for (int pass = 0; pass < 2; ++pass)
+        for (int i = 0; i < j; ++i)
+          v -= q.col(i).dot(v) * q.col(i);
+      if (v.norm() < 0.1)
+        continue;
+      q.col(j) = v.normalized();
+      ++j;
+    }
+    if (q.determinant() < 0)
+      q.col(0) = -q.col(0);
+    return q;
+  }
+
+private:
+  std::mt19937 gen_;
+};
+
+// ---------------------------------------------------------------------------
+// Small exact helpers
+// ---------------------------------------------------------------------------
+
+template <typename M>
+double orthonormality_error(const M& m)
+{
+  using Square = Eigen::Matrix<double, M::ColsAtCompileTime, M::ColsAtCompileTime>;
+  return (m.transpose() * m - Square::Identity()).cwiseAbs().maxCoeff();
+}
+
+// Distance between two unit vectors up to sign (directions have no orientation).
+template <typename A, typename B>
+double distance_up_to_sign(const A& a, const B& b)
+{
+  return (std::min)((a - b).norm(), (a + b).norm());
+}
+
+Mat<2, 2> rotation2(double angle)
+{
+  Mat<2, 2> r;
+  r << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
+  return r;
+}
+
+// Rotation of R^3 about the unit `axis` by `angle` (Rodrigues).
+Mat<3, 3> rotation3(const Vec<3>& axis, double angle)
+{
+  Mat<3, 3> k;
+  k << 0, -axis.z(), axis.y(), axis.z(), 0, -axis.x(), -axis.y(), axis.x(), 0;
+  return Mat<3, 3>::Identity() + std::sin(angle) * k + (1 - std::cos(angle)) * k * k;
+}
+
+// Stencil in the plane: m points at stratified angles (one per sector 2 pi / m,
+// jittered inside it) and radii in [rmin, rmax]; well spread by construction.
+std::vector<Vec<2>> spread_stencil_2d(Random& random, int m, double rmin = 0.4, double rmax = 1.0)
+{
+  std::vector<Vec<2>> out;
+  const double offset = random.uniform(0, 2 * pi);
+  for (int k = 0; k < m; ++k) {
+    const double angle = offset + 2 * pi * (k + random.uniform(0.1, 0.9)) / m;
+    const double radius = random.uniform(rmin, rmax);
+    out.push_back(radius * Vec<2>(std::cos(angle), std::sin(angle)));
+  }
+  return out;
+}
+
+// Stencil in R^3: m points with radii in [rmin, 1], one per octant first, then anywhere.
+std::vector<Vec<3>> spread_stencil_3d(Random& random, int m, double rmin = 0.4)
+{
+  std::vector<Vec<3>> out;
+  for (int k = 0; static_cast<int>(out.size()) < m; ++k) {
+    Vec<3> v = random.unit_vector<3>() * random.uniform(rmin, 1.0);
+    if (k < 8)
+      for (int i = 0; i < 3; ++i)
+        v[i] = ((k >> i) & 1 ? 1.0 : -1.0) * std::abs(v[i]);
+    out.push_back(v);
+  }
+  return out;
+}
+
+// A symmetric matrix with the prescribed eigenvalues (ascending) and eigenvectors
+// (the columns of the orthogonal `vectors`).
+template <int D>
+Mat<D, D> symmetric_from(const Vec<D>& eigenvalues, const Mat<D, D>& vectors)
+{
+  return vectors * eigenvalues.asDiagonal() * vectors.transpose();
+}
+
+// Prescribed eigenvalues, ascending, at least `gap` apart.
+template <int D>
+Vec<D> separated_eigenvalues(Random& random, double lo, double hi, double gap)
+{
+  for (;;) {
+    Vec<D> l;
+    for (int i = 0; i < D; ++i)
+      l[i] = random.uniform(lo, hi);
+    std::sort(l.data(), l.data() + D);
+    bool ok = true;
+    for (int i = 0; i + 1 < D; ++i)
+      ok = ok && (l[i + 1] - l[i] >= gap);
+    if (ok)
+      return l;
+  }
+}
+
+// A frame of R^N: origin, rotation R; the graph is o + R (x, h(x)), its normal R e_N.
+template <int N>
+struct Frame
+{
+  Vec<N> origin;
+  Mat<N, N> rotation;
+  Vec<N> normal() const { return rotation.col(N - 1); }
+  Mat<N, N - 1> tangents() const { return rotation.template leftCols<N - 1>(); }
+};
+
+// Frames used by the rotated-frame tests: the identity, the flipped frame, normals
+// on other axes, nearly on an axis, then random rotations.
+template <int N>
+Frame<N> test_frame(Random& random, int index)
+{
+  Frame<N> f;
+  f.origin = random.in_cube<N>();
+  if (index == 0) {
+    f.rotation.setIdentity();
+  } else if (index == 1) { // normal -e_N, a rotation by pi about e_1
+    f.rotation.setIdentity();
+    f.rotation(1, 1) = -1;
+    f.rotation(N - 1, N - 1) = -1;
+  } else if (index < 2 + N - 1) { // cyclic permutation of the axes: normal on another axis
+    const int shift = index - 1;
+    f.rotation.setZero();
+    for (int j = 0; j < N; ++j)
+      f.rotation((j + shift) % N, j) = 1;
+    if (f.rotation.determinant() < 0)
+      f.rotation.col(0) = -f.rotation.col(0);
+  } else if (index < 2 + N - 1 + 2) { // nearly on an axis: a tiny random rotation
+    Mat<N, N> a = Mat<N, N>::Zero();
+    const double size = index % 2 ? 1e-9 : 1e-4;
+    for (int i = 0; i < N; ++i)
+      for (int j = i + 1; j < N; ++j) {
+        a(i, j) = size * random.uniform(-1, 1);
+        a(j, i) = -a(i, j);
+      }
+    // Cayley transform: an exact-enough rotation close to the identity.
+    f.rotation = (Mat<N, N>::Identity() - a).inverse() * (Mat<N, N>::Identity() + a);
+  } else {
+    f.rotation = random.rotation<N>();
+  }
+  return f;
+}
+
+// Adds the samples (x, h(x)), placed in R^N by `frame`, to `fit`, expressed in the
+// frame (origin, tangents T, normal n): x' = T^T (p - o), h' = n . (p - o).
+template <int D, int F, int L, typename Height>
+void add_samples(CEI::Taylor_fit<D, F, L>& fit, const std::vector<Vec<D>>& xs, const Height& height,
+                 const Frame<D + 1>& frame, const Mat<D + 1, D>& tangents)
+{
+  const Vec<D + 1> n = frame.normal();
+  for (const Vec<D>& x : xs) {
+    Vec<D + 1> local;
+    local << x, height(x);
+    const Vec<D + 1> q = (frame.origin + frame.rotation * local) - frame.origin;
+    fit.add(tangents.transpose() * q, n.dot(q));
+  }
+}
+
+// Exact curvatures and directions of the graph of h(x) = g.x + 1/2 x^T C x over
+// the frame (T, n) at the origin (D = 2), by the closed form of the 2x2
+// (non-symmetric) Weingarten matrix M = (1/l) G^-1 C, G = I + g g^T,
+// l = sqrt(1 + |g|^2): its eigenvalues mu are the upward normal curvatures, the
+// library's curvatures are -mu, sorted decreasing; a direction is X_a = T a + n (g.a)
+// for an eigenvector a of M.
+struct Exact_graph_curvature
+{
+  std::array<double, 2> curvatures;      // decreasing
+  std::array<Vec<3>, 2> directions;      // unit
+  Vec<3> normal;
+};
+
+Exact_graph_curvature exact_graph_curvature(const Mat<2, 2>& c, const Vec<2>& g, const Mat<3, 2>& t,
+                                            const Vec<3>& n)
+{
+  const long double g0 = g[0], g1 = g[1];
+  const long double l2 = 1.0L + g0 * g0 + g1 * g1;
+  const long double l = std::sqrt(l2);
+  // G^-1 = I - g g^T / l^2 (Sherman-Morrison)
+  const long double gi00 = 1 - g0 * g0 / l2, gi01 = -g0 * g1 / l2, gi11 = 1 - g1 * g1 / l2;
+  const long double c00 = c(0, 0), c01 = c(0, 1), c11 = c(1, 1);
+  const long double m00 = (gi00 * c00 + gi01 * c01) / l, m01 = (gi00 * c01 + gi01 * c11) / l;
+  const long double m10 = (gi01 * c00 + gi11 * c01) / l, m11 = (gi01 * c01 + gi11 * c11) / l;
+  const long double half_trace = 0.5L * (m00 + m11);
+  const long double det = m00 * m11 - m01 * m10;
+  const long double disc = std::sqrt((std::max)(0.0L, half_trace * half_trace - det));
+  const long double mu[2] = {half_trace - disc, half_trace + disc}; // ascending
+  Exact_graph_curvature r;
+  for (int i = 0; i < 2; ++i) {
+    r.curvatures[i] = static_cast<double>(-mu[i]);
+    // (M - mu I) a = 0: take the longer of the two candidate null vectors.
+    const long double a1x = m01, a1y = mu[i] - m00;
+    const long double a2x = mu[i] - m11, a2y = m10;
+    const bool first = a1x * a1x + a1y * a1y >= a2x * a2x + a2y * a2y;
+    const Vec<2> a(static_cast<double>(first ? a1x : a2x), static_cast<double>(first ? a1y : a2y));
+    r.directions[i] = (t * a + n * g.dot(a)).normalized();
+  }
+  r.normal = (n - t * g) / static_cast<double>(l);
+  return r;
+}
+
+// Independent 1-norm condition number of a symmetric positive definite matrix
+// after scaling it to a unit diagonal, in long double with Gauss-Jordan inversion.
+// (Invariant to any diagonal scaling and permutation of the unknowns, so the
+// monomials may be scaled and ordered differently from the library's.)
+long double one_norm_condition(std::vector<std::vector<long double>> a)
+{
+  const std::size_t n = a.size();
+  auto norm1 = [n](const std::vector<std::vector<long double>>& m) {
+    long double best = 0;
+    for (std::size_t j = 0; j < n; ++j) {
+      long double sum = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        sum += std::abs(m[i][j]);
+      best = (std::max)(best, sum);
+    }
+    return best;
+  };
+  const long double norm = norm1(a);
+  std::vector<std::vector<long double>> inv(n, std::vector<long double>(n, 0));
+  for (std::size_t i = 0; i < n; ++i)
+    inv[i][i] = 1;
+  for (std::size_t col = 0; col < n; ++col) {
+    std::size_t pivot = col;
+    for (std::size_t r = col + 1; r < n; ++r)
+      if (std::abs(a[r][col]) > std::abs(a[pivot][col]))
+        pivot = r;
+    std::swap(a[col], a[pivot]);
+    std::swap(inv[col], inv[pivot]);
+    const long double p = a[col][col];
+    for (std::size_t j = 0; j < n; ++j) {
+      a[col][j] /= p;
+      inv[col][j] /= p;
+    }
+    for (std::size_t r = 0; r < n; ++r)
+      if (r != col) {
+        const long double f = a[r][col];
+        for (std::size_t j = 0; j < n; ++j) {
+          a[r][j] -= f * a[col][j];
+          inv[r][j] -= f * inv[col][j];
+        }
+      }
+  }
+  return norm * norm1(inv);
+}
+
+// The documented sample coordinates of the fit <D, F, L> at x: x itself, then
+// the coordinates of x x^T / 2 and of x (x) x (x) x in orthonormal bases of the
+// symmetric tensors (entry times the square root of the number of its index
+// orderings). The 1-norm condition does not depend on their order.
+template <int D>
+std::vector<long double> monomials(const Vec<D>& x, int first_order, int last_order)
+{
+  std::vector<long double> m;
+  if (first_order == 1)
+    for (int i = 0; i < D; ++i)
+      m.push_back(x[i]);
+  for (int i = 0; i < D; ++i)
+    for (int j = i; j < D; ++j)
+      m.push_back((i == j ? 1.0L : std::sqrt(2.0L)) * static_cast<long double>(x[i]) * x[j] / 2);
+  if (last_order == 3)
+    for (int i = 0; i < D; ++i)
+      for (int j = i; j < D; ++j)
+        for (int k = j; k < D; ++k) {
+          const int orderings = i == k ? 1 : (i == j || j == k) ? 3 : 6;
+          m.push_back(std::sqrt(static_cast<long double>(orderings)) * static_cast<long double>(x[i]) * x[j] * x[k]);
+        }
+  return m;
+}
+
+template <int D>
+long double independent_condition(const std::vector<Vec<D>>& xs, int first_order, int last_order)
+{
+  const std::size_t n = monomials<D>(Vec<D>::Zero(), first_order, last_order).size();
+  std::vector<std::vector<long double>> a(n, std::vector<long double>(n, 0));
+  for (const Vec<D>& x : xs) {
+    const std::vector<long double> m = monomials<D>(x, first_order, last_order);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j)
+        a[i][j] += m[i] * m[j];
+  }
+  return one_norm_condition(a);
+}
+
+// ---------------------------------------------------------------------------
+// tangent_basis
+// ---------------------------------------------------------------------------
+
+template <int N>
+std::vector<Vec<N>> test_normals(Random& random)
+{
+  std::vector<Vec<N>> normals;
+  for (int k = 0; k < N; ++k)
+    for (double sign : {1.0, -1.0}) {
+      const Vec<N> axis = sign * Vec<N>::Unit(k);
+      normals.push_back(axis);
+      // Nearly on the axis, by several orders of magnitude.
+      for (double delta : {1e-2, 1e-6, 1e-10, 1e-15, 1e-300}) {
+        Vec<N> v = random.unit_vector<N>();
+        v -= v.dot(axis) * axis;
+        normals.push_back((axis + delta * v.normalized()).normalized());
+      }
+    }
+  // Ties between the largest components: (+-1, ..., +-1)/sqrt(N) and (+-1, +-1, 0, ..)/sqrt 2.
+  for (int signs = 0; signs < (1 << N); ++signs) {
+    Vec<N> v;
+    for (int i = 0; i < N; ++i)
+      v[i] = (signs >> i) & 1 ? -1.0 : 1.0;
+    normals.push_back(v.normalized());
+    Vec<N> w = Vec<N>::Zero();
+    w[0] = v[0];
+    w[N - 1] = v[N - 1];
+    normals.push_back(w.normalized());
+  }
+  for (int i = 0; i < 2000; ++i)
+    normals.push_back(random.unit_vector<N>());
+  return normals;
+}
+
+template <int N>
+void check_tangent_basis(std::uint32_t seed)
+{
+  Random random(seed);
+  const std::vector<Vec<N>> normals = test_normals<N>(random);
+  double worst_orthonormality = 0, worst_orthogonality = 0;
+  for (const Vec<N>& n : normals) {
+    const Mat<N, N - 1> t = CEI::tangent_basis<N>(n);
+    ASSERT_TRUE(t.allFinite()) << "n = " << n.transpose();
+    const double orthonormality = orthonormality_error(t);
+    const double orthogonality = (t.transpose() * n).cwiseAbs().maxCoeff();
+    EXPECT_LE(orthonormality, 1e-14) << "n = " << n.transpose();
+    EXPECT_LE(orthogonality, 1e-14) << "n = " << n.transpose();
+    worst_orthonormality = (std::max)(worst_orthonormality, orthonormality);
+    worst_orthogonality = (std::max)(worst_orthogonality, orthogonality);
+    // [T n] is then an orthonormal basis of R^N: |det| = 1.
+    Mat<N, N> full;
+    full << t, n;
+    EXPECT_NEAR(std::abs(full.determinant()), 1.0, 1e-13) << "n = " << n.transpose();
+  }
+  std::cout << "tangent_basis<" << N << ">: " << normals.size() << " normals, max |T^T T - I| = "
+            << worst_orthonormality << ", max |T^T n| = " << worst_orthogonality << "\n";
+}
+
+TEST(TangentBasis, OrthonormalAndOrthogonalToNormalIn3D) { check_tangent_basis<3>(11); }
+
+TEST(TangentBasis, OrthonormalAndOrthogonalToNormalIn4D) { check_tangent_basis<4>(12); }
+
+// ---------------------------------------------------------------------------
+// Hamann's fit Taylor_fit<2, 2, 2>
+// ---------------------------------------------------------------------------
+
+TEST(HamannFit, RecoversParaboloidAndCurvaturesInRotatedFrames)
+{
+  Random random(21);
+  double worst_coefficient = 0, worst_curvature = 0, worst_direction = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const int m = 6 + trial % 15; // 6..20 samples
+    const Vec<2> lambda = separated_eigenvalues<2>(random, -3, 3, 0.2);
+    const double theta = random.uniform(0, pi);
+    const Mat<2, 2> eigenvectors = rotation2(theta);
+    const Mat<2, 2> c = symmetric_from<2>(lambda, eigenvectors);
+    const double a = c(0, 0), b = c(0, 1), cc = c(1, 1);
+    const auto height = [&](const Vec<2>& x) {
+      return 0.5 * (a * x[0] * x[0] + 2 * b * x[0] * x[1] + cc * x[1] * x[1]);
+    };
+    const std::vector<Vec<2>> xs = spread_stencil_2d(random, m);
+    const Frame<3> frame = test_frame<3>(random, trial);
+    const Vec<3> n = frame.normal();
+    const Mat<3, 2> t = CEI::tangent_basis<3>(n);
+
+    CEI::Taylor_fit<2, 2, 2> fit;
+    add_samples(fit, xs, height, frame, t);
+    EXPECT_EQ(fit.size(), m);
+    ASSERT_TRUE(fit.solve(1e3)) << "trial " << trial << ", condition " << fit.condition_number();
+    EXPECT_EQ(fit.gradient(), Vec<2>::Zero());
+
+    // In the fit's frame the parameters are x' = Q x, Q = T^T R_2 (an orthogonal
+    // 2x2 matrix, possibly a reflection), so the Hessian is Q C Q^T.
+    const Mat<2, 2> q = t.transpose() * frame.tangents();
+    ASSERT_LE(orthonormality_error(q), 1e-14);
+    const Mat<2, 2> expected_hessian = q * c * q.transpose();
+    const Mat<2, 2> back = q.transpose() * fit.hessian() * q; // a, b, c recovered
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) {
+        EXPECT_NEAR(fit.hessian()(i, j), expected_hessian(i, j), 1e-12) << "trial " << trial;
+        worst_coefficient = (std::max)(worst_coefficient, std::abs(fit.hessian()(i, j) - expected_hessian(i, j)));
+      }
+    EXPECT_NEAR(back(0, 0), a, 1e-12) << "trial " << trial;
+    EXPECT_NEAR(back(0, 1), b, 1e-12) << "trial " << trial;
+    EXPECT_NEAR(back(1, 1), cc, 1e-12) << "trial " << trial;
+    if (trial == 0) { // identity frame: T = [e_x e_y] exactly, the Hessian is [[a b][b c]] itself
+      EXPECT_LE((fit.hessian() - c).cwiseAbs().maxCoeff(), 1e-12);
+    }
+
+    // Curvatures: -(eigenvalues of C), decreasing; directions R_2 (eigenvectors).
+    const auto check_curvature = [&](const Mat<3, 2>& tangents, const char* what) {
+      const CEI::Graph_curvature<3> gc = CEI::graph_curvature<3>(fit.hessian(), fit.gradient(), tangents, n);
+      for (int i = 0; i < 2; ++i) {
+        EXPECT_NEAR(gc.curvatures[i], -lambda[i], 1e-12) << what << ", trial " << trial;
+        worst_curvature = (std::max)(worst_curvature, std::abs(gc.curvatures[i] + lambda[i]));
+        const Vec<3> expected_direction = frame.tangents() * eigenvectors.col(i);
+        const double e = distance_up_to_sign(gc.directions.col(i), expected_direction);
+        EXPECT_LE(e, 1e-11) << what << ", trial " << trial << ", direction " << i;
+        worst_direction = (std::max)(worst_direction, e);
+        EXPECT_NEAR(gc.directions.col(i).norm(), 1.0, 1e-14);
+        EXPECT_LE(std::abs(gc.directions.col(i).dot(n)), 1e-14);
+      }
+      EXPECT_GE(gc.curvatures[0], gc.curvatures[1]);
+      EXPECT_LE(std::abs(gc.directions.col(0).dot(gc.directions.col(1))), 1e-14);
+      EXPECT_LE((gc.normal - n).norm(), 1e-15);
+    };
+    check_curvature(t, "tangent_basis frame");
+
+    // The same in a frame turned in the tangent plane (and one reflected): the
+    // curvatures must not depend on the in-plane rotation of the frame.
+    const Mat<3, 2> t_turned = t * rotation2(random.uniform(0, 2 * pi));
+    Mat<2, 2> flip;
+    flip << 0, 1, 1, 0;
+    for (const Mat<3, 2>& other : {t_turned, Mat<3, 2>(t * flip)}) {
+      CEI::Taylor_fit<2, 2, 2> fit2;
+      add_samples(fit2, xs, height, frame, other);
+      ASSERT_TRUE(fit2.solve(1e3));
+      const Mat<2, 2> q2 = other.transpose() * frame.tangents();
+      EXPECT_LE((fit2.hessian() - q2 * c * q2.transpose()).cwiseAbs().maxCoeff(), 1e-12);
+      fit = fit2;
+      check_curvature(other, "turned frame");
+    }
+  }
+  std::cout << "Hamann fit: max |Hessian error| " << worst_coefficient << ", max |curvature error| "
+            << worst_curvature << ", max direction error " << worst_direction << "\n";
+}
+
+TEST(HamannFit, PlaneGivesZeroCurvature)
+{
+  Random random(22);
+  for (int trial = 0; trial < 40; ++trial) {
+    const std::vector<Vec<2>> xs = spread_stencil_2d(random, 6 + trial % 15);
+    const Frame<3> frame = test_frame<3>(random, trial);
+    const Mat<3, 2> t = CEI::tangent_basis<3>(frame.normal());
+    CEI::Taylor_fit<2, 2, 2> fit;
+    add_samples(fit, xs, [](const Vec<2>&) { return 0.0; }, frame, t);
+    ASSERT_TRUE(fit.solve(1e3)) << "trial " << trial;
+    const CEI::Graph_curvature<3> gc = CEI::graph_curvature<3>(fit.hessian(), fit.gradient(), t, frame.normal());
+    EXPECT_LE(gc.curvatures.cwiseAbs().maxCoeff(), 1e-14) << "trial " << trial;
+    if (trial == 0) { // identity frame: every height is exactly 0
+      EXPECT_EQ(gc.curvatures.cwiseAbs().maxCoeff(), 0.0);
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------
+// graph_curvature with a gradient, and the gradient-fitting variants
+// ---------------------------------------------------------------------------
+
+void check_graph_curvature(const CEI::Graph_curvature<3>& gc, const Exact_graph_curvature& exact, double tolerance,
+                           const char* what, int trial)
+{
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_NEAR(gc.curvatures[i], exact.curvatures[i], tolerance) << what << ", trial " << trial;
+    EXPECT_LE(distance_up_to_sign(gc.directions.col(i), exact.directions[i]), 1e3 * tolerance)
+      << what << ", trial " << trial << ", direction " << i;
+    EXPECT_NEAR(gc.directions.col(i).norm(), 1.0, 1e-14) << what << ", trial " << trial;
+    EXPECT_LE(std::abs(gc.directions.col(i).dot(gc.normal)), 1e-14) << what << ", trial " << trial;
+  }
+  EXPECT_GE(gc.curvatures[0], gc.curvatures[1]);
+  EXPECT_LE(std::abs(gc.directions.col(0).dot(gc.directions.col(1))), 1e-14) << what << ", trial " << trial;
+  EXPECT_LE((gc.normal - exact.normal).norm(), tolerance) << what << ", trial " << trial;
+  EXPECT_NEAR(gc.normal.norm(), 1.0, 1e-14);
+}
+
+TEST(GraphCurvature, ClosedFormOfTiltedGraph)
+{
+  // graph_curvature<3> alone, with exact g and C: the curvatures of
+  // z = g.x + 1/2 x^T C x at the origin.
+  Random random(31);
+  for (int trial = 0; trial < 200; ++trial) {
+    const Mat<2, 2> c = symmetric_from<2>(separated_eigenvalues<2>(random, -3, 3, 0.2), rotation2(random.uniform(0, pi)));
+    const Vec<2> g = random.in_cube<2>(trial < 100 ? 1.0 : 5.0);
+    const Vec<3> n = trial == 0 ? Vec<3>::UnitZ() : random.unit_vector<3>();
+    const Mat<3, 2> t = CEI::tangent_basis<3>(n);
+    const CEI::Graph_curvature<3> gc = CEI::graph_curvature<3>(c, g, t, n);
+    check_graph_curvature(gc, exact_graph_curvature(c, g, t, n), 1e-13, "closed form", trial);
+  }
+  // A concrete case worked by hand: the cylinder-like graph z = x + x^2/2 (g = (1,0),
+  // C = diag(1,0)), n = e_z, T = [e_x e_y]: l = sqrt 2, G = diag(2,1), upward normal
+  // curvature C_00 / (l G_00) = 1/(2 sqrt 2); library curvatures 0 and -1/(2 sqrt 2).
+  Mat<2, 2> c;
+  c << 1, 0, 0, 0;
+  const Mat<3, 2> t = Mat<3, 2>::Identity();
+  const CEI::Graph_curvature<3> gc = CEI::graph_curvature<3>(c, Vec<2>(1, 0), t, Vec<3>::UnitZ());
+  EXPECT_NEAR(gc.curvatures[0], 0.0, 1e-15);
+  EXPECT_NEAR(gc.curvatures[1], -1 / (2 * std::sqrt(2.0)), 1e-15);
+  EXPECT_LE(distance_up_to_sign(gc.directions.col(0), Vec<3>(0, 1, 0)), 1e-15);
+  EXPECT_LE(distance_up_to_sign(gc.directions.col(1), Vec<3>(1, 0, 1) / std::sqrt(2.0)), 1e-15);
+  EXPECT_LE((gc.normal - Vec<3>(-1, 0, 1) / std::sqrt(2.0)).norm(), 1e-15);
+}
+
+template <int L>
+void check_gradient_fit(std::uint32_t seed, double tolerance)
+{
+  Random random(seed);
+  double worst = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    constexpr int unknowns = CEI::Taylor_fit<2, 1, L>::unknowns;
+    static_assert(unknowns == (L == 2 ? 5 : 9), "2 gradient + 3 Hessian [+ 4 cubic] unknowns");
+    const int m = unknowns + 2 + trial % 10;
+    const Mat<2, 2> c = symmetric_from<2>(separated_eigenvalues<2>(random, -3, 3, 0.2), rotation2(random.uniform(0, pi)));
+    const Vec<2> g = random.in_cube<2>();
+    std::array<double, 4> e{}; // cubic coefficients of x^3, x^2 y, x y^2, y^3
+    if (L == 3)
+      for (double& coefficient : e)
+        coefficient = random.uniform(-2, 2);
+    const auto height = [&](const Vec<2>& x) {
+      const double u = x[0], v = x[1];
+      return g.dot(x) + 0.5 * x.dot(c * x) + e[0] * u * u * u + e[1] * u * u * v + e[2] * u * v * v + e[3] * v * v * v;
+    };
+    const std::vector<Vec<2>> xs = spread_stencil_2d(random, m, 0.3, 1.0);
+    const Frame<3> frame = test_frame<3>(random, trial);
+    const Vec<3> n = frame.normal();
+    const Mat<3, 2> t = CEI::tangent_basis<3>(n);
+    CEI::Taylor_fit<2, 1, L> fit;
+    add_samples(fit, xs, height, frame, t);
+    ASSERT_TRUE(fit.solve(1e5)) << "trial " << trial << ", condition " << fit.condition_number();
+
+    const Mat<2, 2> q = t.transpose() * frame.tangents();
+    const Vec<2> expected_gradient = q * g;
+    const Mat<2, 2> expected_hessian = q * c * q.transpose();
+    const double error = (std::max)((fit.gradient() - expected_gradient).cwiseAbs().maxCoeff(),
+                                    (fit.hessian() - expected_hessian).cwiseAbs().maxCoeff());
+    worst = (std::max)(worst, error);
+    EXPECT_LE(error, tolerance) << "trial " << trial << ", condition " << fit.condition_number();
+
+    // Curvatures of the graph from the exact g and C (any frame gives the same ones;
+    // compute them in the fit's frame, with the exact coefficients).
+    const CEI::Graph_curvature<3> gc = CEI::graph_curvature<3>(fit.hessian(), fit.gradient(), t, n);
+    const Exact_graph_curvature exact = exact_graph_curvature(expected_hessian, expected_gradient, t, n);
+    check_graph_curvature(gc, exact, 10 * tolerance, L == 2 ? "Taylor_fit<2,1,2>" : "Taylor_fit<2,1,3>", trial);
+    // ... and the normal is (n - T g) / l, which in the original frame is R (-g, 1) / l.
+    Vec<3> upward;
+    upward << -g, 1;
+    EXPECT_LE((gc.normal - frame.rotation * upward / std::sqrt(1 + g.squaredNorm())).norm(), 10 * tolerance);
+  }
+  std::cout << "Taylor_fit<2,1," << L << ">: max |gradient or Hessian error| " << worst << "\n";
+}
+
+TEST(GradientFit, QuadraticRecoversGradientHessianAndCurvatures) { check_gradient_fit<2>(41, 1e-12); }
+
+TEST(GradientFit, CubicRecoversGradientHessianAndCurvatures) { check_gradient_fit<3>(42, 1e-11); }
+
+TEST(GradientFit, SlopedPlaneGivesZeroCurvature)
+{
+  Random random(43);
+  double worst_cubic = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const Vec<2> g = random.in_cube<2>();
+    const auto height = [&](const Vec<2>& x) { return g.dot(x); };
+    const Frame<3> frame = test_frame<3>(random, trial);
+    const Mat<3, 2> t = CEI::tangent_basis<3>(frame.normal());
+    const Mat<2, 2> q = t.transpose() * frame.tangents();
+
+    CEI::Taylor_fit<2, 1, 2> quadratic;
+    add_samples(quadratic, spread_stencil_2d(random, 8 + trial % 10), height, frame, t);
+    ASSERT_TRUE(quadratic.solve(1e3)) << "trial " << trial;
+    const CEI::Graph_curvature<3> gc =
+      CEI::graph_curvature<3>(quadratic.hessian(), quadratic.gradient(), t, frame.normal());
+    EXPECT_LE(gc.curvatures.cwiseAbs().maxCoeff(), 1e-14) << "trial " << trial;
+    EXPECT_LE((quadratic.gradient() - q * g).cwiseAbs().maxCoeff(), 1e-14) << "trial " << trial;
+
+    CEI::Taylor_fit<2, 1, 3> cubic;
+    add_samples(cubic, spread_stencil_2d(random, 12 + trial % 10), height, frame, t);
+    ASSERT_TRUE(cubic.solve(1e5)) << "trial " << trial;
+    const CEI::Graph_curvature<3> gc3 = CEI::graph_curvature<3>(cubic.hessian(), cubic.gradient(), t, frame.normal());
+    // The cubic fit's condition numbers are 1e2..1e4 here, its rounding noise larger.
+    EXPECT_LE(gc3.curvatures.cwiseAbs().maxCoeff(), 1e-13)
+      << "trial " << trial << ", condition " << cubic.condition_number();
+    worst_cubic = (std::max)(worst_cubic, gc3.curvatures.cwiseAbs().maxCoeff());
+
+    // And Hamann's fit of the level plane through the same frame (h = 0).
+    CEI::Taylor_fit<2, 2, 2> level;
+    add_samples(level, spread_stencil_2d(random, 6), [](const Vec<2>&) { return 0.0; }, frame, t);
+    ASSERT_TRUE(level.solve(1e3));
+    EXPECT_LE(level.hessian().cwiseAbs().maxCoeff(), 1e-14);
+  }
+  std::cout << "sloped plane, Taylor_fit<2,1,3>: max |curvature| " << worst_cubic << "\n";
+}
+
+// ---------------------------------------------------------------------------
+// The hypersurface core, D = 3
+// ---------------------------------------------------------------------------
+
+TEST(HypersurfaceFit, RecoversHessianAndThreeCurvatures)
+{
+  Random random(51);
+  double worst_hessian = 0, worst_curvature = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const Vec<3> lambda = separated_eigenvalues<3>(random, -3, 3, 0.3);
+    const Mat<3, 3> eigenvectors = random.rotation<3>();
+    const Mat<3, 3> c = symmetric_from<3>(lambda, eigenvectors);
+    const auto height = [&](const Vec<3>& x) { return 0.5 * x.dot(c * x); };
+    const std::vector<Vec<3>> xs = spread_stencil_3d(random, 12 + trial % 9);
+    const Frame<4> frame = test_frame<4>(random, trial);
+    const Vec<4> n = frame.normal();
+    const Mat<4, 3> t = CEI::tangent_basis<4>(n);
+
+    CEI::Taylor_fit<3, 2, 2> fit;
+    static_assert(CEI::Taylor_fit<3, 2, 2>::unknowns == 6, "6 Hessian coefficients");
+    add_samples(fit, xs, height, frame, t);
+    ASSERT_TRUE(fit.solve(1e3)) << "trial " << trial << ", condition " << fit.condition_number();
+    const Mat<3, 3> q = t.transpose() * frame.tangents();
+    ASSERT_LE(orthonormality_error(q), 1e-14);
+    const double hessian_error = (fit.hessian() - q * c * q.transpose()).cwiseAbs().maxCoeff();
+    EXPECT_LE(hessian_error, 1e-12) << "trial " << trial;
+    EXPECT_EQ(fit.hessian(), fit.hessian().transpose());
+    worst_hessian = (std::max)(worst_hessian, hessian_error);
+
+    const CEI::Graph_curvature<4> gc = CEI::graph_curvature<4>(fit.hessian(), fit.gradient(), t, n);
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(gc.curvatures[i], -lambda[i], 1e-12) << "trial " << trial;
+      worst_curvature = (std::max)(worst_curvature, std::abs(gc.curvatures[i] + lambda[i]));
+      EXPECT_LE(distance_up_to_sign(gc.directions.col(i), frame.tangents() * eigenvectors.col(i)), 1e-11)
+        << "trial " << trial << ", direction " << i;
+    }
+    EXPECT_GE(gc.curvatures[0], gc.curvatures[1]);
+    EXPECT_GE(gc.curvatures[1], gc.curvatures[2]);
+    EXPECT_LE(orthonormality_error(gc.directions), 1e-14) << "trial " << trial;
+    EXPECT_LE((gc.directions.transpose() * n).cwiseAbs().maxCoeff(), 1e-14) << "trial " << trial;
+    EXPECT_LE((gc.normal - n).norm(), 1e-15);
+  }
+  std::cout << "Taylor_fit<3,2,2>: max |Hessian error| " << worst_hessian << ", max |curvature error| "
+            << worst_curvature << "\n";
+}
+
+TEST(HypersurfaceFit, GraphCurvatureWithGradient)
+{
+  // Graph of g.x + 1/2 x^T C x over a frame of R^4, x in R^3. The principal
+  // curvatures kappa and parameter directions a solve C a = -kappa l G a,
+  // G = I + g g^T; a = T^T d for the returned direction d (T^T n = 0). Checked
+  // by the residual of that equation, the trace and the determinant:
+  // sum kappa = -tr(G^-1 C)/l, prod kappa = -det(C)/l^5 (det G = l^2).
+  Random random(52);
+  for (int trial = 0; trial < 100; ++trial) {
+    const Mat<3, 3> c = symmetric_from<3>(separated_eigenvalues<3>(random, -3, 3, 0.3), random.rotation<3>());
+    const Vec<3> g = random.in_cube<3>();
+    const Vec<4> n = random.unit_vector<4>();
+    const Mat<4, 3> t = CEI::tangent_basis<4>(n);
+    const CEI::Graph_curvature<4> gc = CEI::graph_curvature<4>(c, g, t, n);
+    const double l = std::sqrt(1 + g.squaredNorm());
+    const Mat<3, 3> metric = Mat<3, 3>::Identity() + g * g.transpose();
+    for (int i = 0; i < 3; ++i) {
+      const Vec<3> a = t.transpose() * gc.directions.col(i);
+      // d is the tangent vector T a + n (g.a) of the graph
+      EXPECT_LE((gc.directions.col(i) - (t * a + n * g.dot(a))).norm(), 1e-14);
+      EXPECT_LE((c * a + gc.curvatures[i] * l * metric * a).norm(), 1e-13) << "trial " << trial;
+    }
+    const Mat<3, 3> metric_inverse = Mat<3, 3>::Identity() - g * g.transpose() / (l * l);
+    EXPECT_NEAR(gc.curvatures.sum(), -(metric_inverse * c).trace() / l, 1e-13);
+    EXPECT_NEAR(gc.curvatures.prod(), -c.determinant() / std::pow(l, 5), 1e-12);
+    EXPECT_GE(gc.curvatures[0], gc.curvatures[1]);
+    EXPECT_GE(gc.curvatures[1], gc.curvatures[2]);
+    EXPECT_LE(orthonormality_error(gc.directions), 1e-14);
+    EXPECT_LE((gc.directions.transpose() * gc.normal).cwiseAbs().maxCoeff(), 1e-14);
+    Vec<4> expected_normal = (n - t * g) / l;
+    EXPECT_LE((gc.normal - expected_normal).norm(), 1e-15);
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Conditioning
+// ---------------------------------------------------------------------------
+
+TEST(Conditioning, SamplesOnALineThroughTheOriginAreRejected)
+{
+  // Points on the paraboloid above the line t d (t on both sides and one-sided),
+  // in the frame of the paraboloid's own normal e_z: the parameters t d lie on a
+  // line, the quadratic monomials t^2 (d_x^2/2, d_x d_y, d_y^2/2) are proportional.
+  const Vec<3> d(std::cos(0.5), std::sin(0.5), 0);
+  const std::vector<std::vector<double>> parameter_sets = {{-1, -0.6, -0.3, 0.3, 0.6, 1},
+                                                           {0.2, 0.4, 0.6, 0.8, 1.0, 1.2, 1.4, 1.6, 1.8, 2.0}};
+  for (const auto& ts : parameter_sets) {
+    CEI::Taylor_fit<2, 2, 2> hamann;
+    CEI::Taylor_fit<2, 1, 2> quadratic;
+    CEI::Taylor_fit<2, 1, 3> cubic;
+    const Vec<3> n = Vec<3>::UnitZ();
+    const Mat<3, 2> t = CEI::tangent_basis<3>(n);
+    for (double s : ts) {
+      const Vec<3> p = s * d + 0.5 * s * s * n;
+      hamann.add(t.transpose() * p, n.dot(p));
+      quadratic.add(t.transpose() * p, n.dot(p));
+      cubic.add(t.transpose() * p, n.dot(p));
+    }
+    EXPECT_FALSE(hamann.solve(1e3)) << "condition " << hamann.condition_number();
+    EXPECT_FALSE(quadratic.solve(1e3)) << "condition " << quadratic.condition_number();
+    EXPECT_FALSE(cubic.solve(1e5)) << "condition " << cubic.condition_number();
+    // Even a huge threshold does not accept them: the matrix is singular up to rounding.
+    EXPECT_FALSE(hamann.solve(1e12)) << "condition " << hamann.condition_number();
+    std::cout << "line stencil (" << ts.size() << " samples): condition numbers " << hamann.condition_number()
+              << " (Hamann), " << quadratic.condition_number() << " (degree 2), " << cubic.condition_number()
+              << " (degree 3)\n";
+  }
+}
+
+TEST(Conditioning, TiltedLineStencilIsIllConditioned)
+{
+  // The same curve of samples, seen in the frame of a normal tilted by a small
+  // angle about the line's direction: their projections now lie on a curve, the
+  // normal matrix is regular, but nearly singular; it must not be accepted.
+  const std::vector<double> ts = {-1, -0.75, -0.5, 0.25, 0.5, 0.75, 1};
+  for (double angle : {0.5, 1.2}) {
+    const Vec<3> d(std::cos(angle), std::sin(angle), 0);
+    for (double tilt : {1e-2, 1e-3}) {
+      const Vec<3> n = rotation3(d, tilt) * Vec<3>::UnitZ();
+      const Mat<3, 2> t = CEI::tangent_basis<3>(n);
+      CEI::Taylor_fit<2, 2, 2> fit;
+      std::vector<Vec<2>> xs;
+      for (double s : ts) {
+        const Vec<3> p = s * d + 0.5 * s * s * Vec<3>::UnitZ();
+        xs.push_back(t.transpose() * p);
+        fit.add(xs.back(), n.dot(p));
+      }
+      EXPECT_FALSE(fit.solve(1e3));
+      const double condition = fit.condition_number();
+      std::cout << "line at " << angle << " rad from e_x, tilt " << tilt << ": condition number " << condition
+                << " (independent: " << static_cast<double>(independent_condition<2>(xs, 2, 2)) << ")\n";
+      EXPECT_GT(condition, 1e5) << "angle " << angle << ", tilt " << tilt;
+    }
+  }
+}
+
+// A line of samples along a frame axis, tilted by 1e-2: the same stencil as
+// above turned in the tangent plane. Scaling the normal matrix to a unit
+// diagonal would remove exactly the factors that make it nearly singular (it
+// gave a condition number of 38, an accepted fit and a curvature of -1e4 across
+// the line on a unit sphere); the rotation-covariant coordinates do not.
+TEST(Conditioning, TiltedLineStencilAlongAFrameAxisIsIllConditioned)
+{
+  const Vec<3> d = Vec<3>::UnitX();
+  const Vec<3> n = rotation3(d, 1e-2) * Vec<3>::UnitZ();
+  const Mat<3, 2> t = CEI::tangent_basis<3>(n);
+  CEI::Taylor_fit<2, 2, 2> fit;
+  for (double s : {-1.0, -0.75, -0.5, 0.25, 0.5, 0.75, 1.0}) {
+    // a great circle of the unit sphere through the origin, centre e_z
+    const Vec<3> p = std::sin(s) * d + (1 - std::cos(s)) * Vec<3>::UnitZ();
+    fit.add(t.transpose() * p, n.dot(p));
+  }
+  const bool accepted = fit.solve(1e3);
+  std::cout << "line along a frame axis, tilt 1e-2: condition number " << fit.condition_number() << "\n";
+  EXPECT_GT(fit.condition_number(), 1e5);
+  EXPECT_FALSE(accepted) << "accepted with curvatures "
+                         << CEI::graph_curvature<3>(fit.hessian(), fit.gradient(), t, n).curvatures.transpose()
+                         << " (exact: -1 -1)";
+}
+
+TEST(Conditioning, FewerSamplesThanUnknownsAreRejected)
+{
+  Random random(61);
+  const auto height = [](const Vec<2>& x) { return x.squaredNorm(); };
+  const auto run = [&](auto fit, int count) {
+    for (const Vec<2>& x : spread_stencil_2d(random, count))
+      fit.add(x, height(x));
+    EXPECT_FALSE(fit.solve(1e300)) << count << " samples, " << decltype(fit)::unknowns << " unknowns";
+    EXPECT_EQ(fit.condition_number(), std::numeric_limits<double>::infinity());
+  };
+  run(CEI::Taylor_fit<2, 2, 2>(), 2);
+  run(CEI::Taylor_fit<2, 1, 2>(), 4);
+  run(CEI::Taylor_fit<2, 1, 3>(), 8);
+  // And nothing at all.
+  CEI::Taylor_fit<2, 2, 2> empty;
+  EXPECT_FALSE(empty.solve(1e300));
+  CEI::Taylor_fit<3, 2, 2> hyper;
+  for (const Vec<3>& x : spread_stencil_3d(random, 5))
+    hyper.add(x, x.squaredNorm());
+  EXPECT_FALSE(hyper.solve(1e300));
+}
+
+TEST(Conditioning, Valence6StencilIsWellConditioned)
+{
+  // The 6 neighbours of a valence-6 vertex of a triangulated grid.
+  const std::vector<Vec<2>> xs = {Vec<2>(1, 0), Vec<2>(-1, 0), Vec<2>(0, 1), Vec<2>(0, -1), Vec<2>(1, -1), Vec<2>(-1, 1)};
+  CEI::Taylor_fit<2, 2, 2> fit;
+  for (const Vec<2>& x : xs)
+    fit.add(x, 0.5 * (0.3 * x[0] * x[0] - 2 * 0.2 * x[0] * x[1] + 0.7 * x[1] * x[1]));
+  ASSERT_TRUE(fit.solve(1e3));
+  // By hand: with rows (u^2/2, uv/sqrt 2, v^2/2) the normal matrix is
+  // S = [[1 -r 1/2][-r 1 -r][1/2 -r 1]], r = 1/sqrt 2, det S = 1/4,
+  // S^-1 = [[2 2r 0][2r 3 2r][0 2r 2]]; ||S||_1 = 1 + sqrt 2, ||S^-1||_1 = 3 + 2 sqrt 2,
+  // so the condition number is (1 + sqrt 2)^3 = 14.071...
+  const double expected = std::pow(1 + std::sqrt(2.0), 3);
+  EXPECT_NEAR(fit.condition_number(), expected, 1e-12 * expected);
+  const long double r = 1 / std::sqrt(2.0L);
+  EXPECT_NEAR(static_cast<double>(one_norm_condition({{1, -r, 0.5L}, {-r, 1, -r}, {0.5L, -r, 1}})), expected,
+              1e-12 * expected);
+  EXPECT_NEAR(fit.condition_number(), static_cast<double>(independent_condition<2>(xs, 2, 2)), 1e-12 * fit.condition_number());
+  EXPECT_LT(fit.condition_number(), 100);
+  std::cout << "valence-6 stencil: condition number " << fit.condition_number() << "\n";
+  EXPECT_NEAR(fit.hessian()(0, 0), 0.3, 1e-15);
+  EXPECT_NEAR(fit.hessian()(0, 1), -0.2, 1e-15);
+  EXPECT_NEAR(fit.hessian()(1, 1), 0.7, 1e-15);
+}
+
+template <int D, int F, int L>
+void check_condition_against_independent(Random& random, int trials)
+{
+  for (int trial = 0; trial < trials; ++trial) {
+    std::vector<Vec<D>> xs;
+    const int m = CEI::Taylor_fit<D, F, L>::unknowns + 1 + trial % 8;
+    if constexpr (D == 2)
+      xs = spread_stencil_2d(random, m, 0.2, 1.0);
+    else
+      xs = spread_stencil_3d(random, m, 0.2);
+    CEI::Taylor_fit<D, F, L> fit;
+    for (const Vec<D>& x : xs)
+      fit.add(x, random.uniform(-1, 1));
+    fit.solve(1e300);
+    const double expected = static_cast<double>(independent_condition<D>(xs, F, L));
+    EXPECT_NEAR(fit.condition_number(), expected, 1e-9 * expected)
+      << "Taylor_fit<" << D << "," << F << "," << L << ">, trial " << trial;
+  }
+}
+
+TEST(Conditioning, ConditionNumberIsTheOneNormConditionInOrthonormalTensorCoordinates)
+{
+  Random random(62);
+  check_condition_against_independent<2, 2, 2>(random, 30);
+  check_condition_against_independent<2, 1, 2>(random, 30);
+  check_condition_against_independent<2, 1, 3>(random, 30);
+  check_condition_against_independent<3, 2, 2>(random, 30);
+  check_condition_against_independent<3, 1, 2>(random, 30);
+}
+
+template <int F, int L>
+void check_scale_invariance(Random& random)
+{
+  for (int trial = 0; trial < 10; ++trial) {
+    const std::vector<Vec<2>> xs = spread_stencil_2d(random, CEI::Taylor_fit<2, F, L>::unknowns + 3, 0.3, 1.0);
+    const Mat<2, 2> c = symmetric_from<2>(separated_eigenvalues<2>(random, -3, 3, 0.2), rotation2(random.uniform(0, pi)));
+    const Vec<2> g = F == 1 ? Vec<2>(random.in_cube<2>()) : Vec<2>::Zero();
+    const double e = L == 3 ? random.uniform(-1, 1) : 0.0;
+    const auto height = [&](const Vec<2>& x) { return g.dot(x) + 0.5 * x.dot(c * x) + e * x[0] * x[0] * x[1]; };
+    CEI::Taylor_fit<2, F, L> unit;
+    for (const Vec<2>& x : xs)
+      unit.add(x, height(x));
+    ASSERT_TRUE(unit.solve(1e5));
+    for (double s : {1e-6, 1e6}) {
+      // The same surface scaled by s: samples (s x, s h(x)); gradient unchanged, Hessian / s.
+      CEI::Taylor_fit<2, F, L> scaled;
+      for (const Vec<2>& x : xs)
+        scaled.add(s * x, s * height(x));
+      // Every entry of a single-order normal matrix scales by the same power of s;
+      // mixed orders do not, which is why the estimators scale the samples to the
+      // mean 1-ring edge before fitting.
+      ASSERT_TRUE(scaled.solve(1e300)) << "scale " << s;
+      if (F == 2 && L == 2) {
+        EXPECT_NEAR(scaled.condition_number(), unit.condition_number(), 1e-9 * unit.condition_number())
+          << "scale " << s;
+      }
+      EXPECT_LE((scaled.hessian() * s - c).cwiseAbs().maxCoeff(), 1e-11) << "scale " << s;
+      EXPECT_LE((scaled.gradient() - g).cwiseAbs().maxCoeff(), 1e-11) << "scale " << s;
+    }
+  }
+}
+
+TEST(Conditioning, ScalingTheSamplesScalesTheFitAndKeepsASingleOrderConditionNumber)
+{
+  Random random(63);
+  check_scale_invariance<2, 2>(random);
+  check_scale_invariance<1, 2>(random);
+  check_scale_invariance<1, 3>(random);
+}
+
+template <int F, int L>
+void check_rotation(Random& random)
+{
+  constexpr int n = CEI::Taylor_fit<2, F, L>::unknowns;
+  for (int trial = 0; trial < 20; ++trial) {
+    const std::vector<Vec<2>> xs = spread_stencil_2d(random, n + 2 + trial % 6, 0.2, 1.0);
+    CEI::Taylor_fit<2, F, L> fit, turned;
+    const Mat<2, 2> r = rotation2(random.uniform(0, 2 * pi));
+    for (const Vec<2>& x : xs) {
+      fit.add(x, 0);
+      turned.add(r * x, 0);
+    }
+    fit.solve(1e300);
+    turned.solve(1e300);
+    // Each order's block turns by an orthogonal matrix: the 2-norm condition is
+    // unchanged, and the 1-norm one is within a factor n of it.
+    EXPECT_LE(turned.condition_number(), n * n * fit.condition_number()) << "trial " << trial;
+    EXPECT_LE(fit.condition_number(), n * n * turned.condition_number()) << "trial " << trial;
+  }
+}
+
+TEST(Conditioning, TurningTheFrameInTheTangentPlaneChangesTheConditionNumberByBoundedFactor)
+{
+  Random random(64);
+  check_rotation<2, 2>(random);
+  check_rotation<1, 2>(random);
+  check_rotation<1, 3>(random);
+}
+
+// ---------------------------------------------------------------------------
+// Weights
+// ---------------------------------------------------------------------------
+
+template <int F, int L>
+void check_zero_weight(Random& random)
+{
+  for (int trial = 0; trial < 10; ++trial) {
+    const std::vector<Vec<2>> xs = spread_stencil_2d(random, CEI::Taylor_fit<2, F, L>::unknowns + 2 + trial % 5);
+    const std::vector<Vec<2>> extra = spread_stencil_2d(random, 4, 0.0, 3.0);
+    std::vector<double> heights;
+    for (std::size_t i = 0; i < xs.size(); ++i)
+      heights.push_back(random.uniform(-1, 1)); // noisy data: the fit is a true least-squares fit
+    CEI::Taylor_fit<2, F, L> without, with;
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+      without.add(xs[i], heights[i]);
+      with.add(xs[i], heights[i]);
+      if (i < extra.size()) // interleaved zero-weight samples with absurd heights
+        with.add(extra[i], 1e6 * (i + 1), 0.0);
+    }
+    ASSERT_TRUE(without.solve(1e6));
+    ASSERT_TRUE(with.solve(1e6));
+    // Adding 0 * row row^T changes no bit of the normal equations.
+    EXPECT_EQ(with.condition_number(), without.condition_number());
+    EXPECT_EQ(with.hessian(), without.hessian());
+    EXPECT_EQ(with.gradient(), without.gradient());
+
+    // A weight of 2 is a sample counted twice (to rounding).
+    CEI::Taylor_fit<2, F, L> doubled, repeated;
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+      doubled.add(xs[i], heights[i], i == 0 ? 2.0 : 1.0);
+      repeated.add(xs[i], heights[i]);
+      if (i == 0)
+        repeated.add(xs[i], heights[i]);
+    }
+    ASSERT_TRUE(doubled.solve(1e6));
+    ASSERT_TRUE(repeated.solve(1e6));
+    EXPECT_LE((doubled.hessian() - repeated.hessian()).cwiseAbs().maxCoeff(), 1e-12);
+    EXPECT_LE((doubled.gradient() - repeated.gradient()).cwiseAbs().maxCoeff(), 1e-12);
+    // ... and differs from the unweighted fit of noisy data.
+    EXPECT_GT((doubled.hessian() - without.hessian()).cwiseAbs().maxCoeff(), 1e-6);
+  }
+}
+
+TEST(Weights, ZeroWeightIsTheSameAsLeavingTheSampleOut)
+{
+  Random random(71);
+  check_zero_weight<2, 2>(random);
+  check_zero_weight<1, 2>(random);
+  check_zero_weight<1, 3>(random);
+}
+
+TEST(Weights, ZeroWeightSamplesDoNotMakeTooFewSamplesSolvable)
+{
+  // Two real samples and a zero-weight one for three unknowns: still unsolvable.
+  CEI::Taylor_fit<2, 2, 2> fit;
+  fit.add(Vec<2>(1, 0), 0.5);
+  fit.add(Vec<2>(0, 1), 0.5);
+  fit.add(Vec<2>(1, 1), 1.0, 0.0);
+  EXPECT_FALSE(fit.solve(1e300));
+}
+
+} // namespace
