@@ -29,7 +29,10 @@
   X(neighborhood_rings_t, neighborhood_rings)                                         \
   X(boundary_neighborhood_rings_t, boundary_neighborhood_rings)                       \
   X(max_neighborhood_rings_t, max_neighborhood_rings)                                 \
-  X(max_condition_number_t, max_condition_number)
+  X(max_condition_number_t, max_condition_number)                                     \
+  X(neighbor_weighting_t, neighbor_weighting)                                         \
+  X(curve_model_t, curve_model)                                                       \
+  X(extrapolation_order_t, extrapolation_order)
 
 // CGAL's parameters that functions of this package read; re-declared as members
 // so that chaining them never falls back to CGAL's own class.
