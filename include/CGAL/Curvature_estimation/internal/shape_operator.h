@@ -34,7 +34,8 @@ void symmetric_eigen(const Eigen::Matrix<double, D, D>& m, Eigen::Matrix<double,
     // Closed form: Eigen's direct 2x2 solver costs more than the whole fit.
     const double a = m(0, 0), b = m(0, 1), c = m(1, 1);
     const double mean = 0.5 * (a + c);
-    const double radius = std::hypot(0.5 * (a - c), b);
+    const double half_difference = 0.5 * (a - c);
+    const double radius = std::sqrt(half_difference * half_difference + b * b);  // scaled curvatures: no overflow
     values << mean - radius, mean + radius;
     // An eigenvector of the larger eigenvalue: (b, l - a) or (l - c, b), whichever
     // is the better conditioned; the other is orthogonal.
