@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "estimator_runs.h"
 #include "test_surfaces.h"
 
 #include <cmath>
@@ -33,81 +34,23 @@ using CGAL::Curvature_estimation::Estimation_status;
 namespace CE = CGAL::Curvature_estimation;
 namespace params = CGAL::Curvature_estimation::parameters;
 
-// Per-vertex results in the soup's vertex order.
-struct Estimates
-{
-  std::vector<Curvatures> principal;
-  std::vector<double> mean, gaussian;
-  std::vector<Estimation_status> status;
-};
+using Estimates = ce_test::Estimates<Kernel>;
+using Table_errors = ce_test::Curvature_errors;
+using ce_test::curvature_errors;
 
-// Runs the estimator on a Surface_mesh with every output requested; `extra`
-// adds parameters (a normal map, rings, ...).
+// Runs the estimator with every output requested; `extra` adds parameters.
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename Extra>
 Estimates estimate(const Mesh& mesh, const Extra& extra)
 {
-  Mesh& m = const_cast<Mesh&>(mesh);
-  auto principal = m.add_property_map<Mesh::Vertex_index, Curvatures>("v:test_pcd").first;
-  auto mean = m.add_property_map<Mesh::Vertex_index, double>("v:test_H").first;
-  auto gaussian = m.add_property_map<Mesh::Vertex_index, double>("v:test_K").first;
-  auto status = m.add_property_map<Mesh::Vertex_index, Estimation_status>("v:test_status").first;
-  CE::paraboloid_fitting_curvatures<ConcurrencyTag>(
-    mesh, extra.vertex_principal_curvatures_and_directions_map(principal)
-            .vertex_mean_curvature_map(mean)
-            .vertex_Gaussian_curvature_map(gaussian)
-            .vertex_estimation_status_map(status));
-  Estimates e;
-  for (Mesh::Vertex_index v : vertices(mesh)) {
-    e.principal.push_back(principal[v]);
-    e.mean.push_back(mean[v]);
-    e.gaussian.push_back(gaussian[v]);
-    e.status.push_back(status[v]);
-  }
-  m.remove_property_map(principal);
-  m.remove_property_map(mean);
-  m.remove_property_map(gaussian);
-  m.remove_property_map(status);
-  return e;
+  return ce_test::run_with_all_outputs<Kernel>(
+    mesh, [](const Mesh& m, const auto& np) { CE::paraboloid_fitting_curvatures<ConcurrencyTag>(m, np); }, extra);
 }
 
 Estimates estimate(const Mesh& mesh) { return estimate(mesh, params::default_values()); }
 
-struct Table_errors
-{
-  ce_test::Error_accumulator k_max, k_min, mean, gaussian;
-};
-
-// Errors against the exact curvature; `include(i)` selects vertices.
-template <typename Include>
-Table_errors errors(const Estimates& e, const std::vector<ce_test::Exact_curvature>& exact, Include include)
-{
-  Table_errors t;
-  for (std::size_t i = 0; i < exact.size(); ++i) {
-    if (!include(i))
-      continue;
-    t.k_max.add(exact[i].k_max, e.principal[i].max_curvature);
-    t.k_min.add(exact[i].k_min, e.principal[i].min_curvature);
-    t.mean.add(exact[i].H, e.mean[i]);
-    t.gaussian.add(exact[i].K, e.gaussian[i]);
-  }
-  return t;
-}
-
-Table_errors all_vertex_errors(const Estimates& e, const std::vector<ce_test::Exact_curvature>& exact)
-{
-  return errors(e, exact, [](std::size_t) { return true; });
-}
-
-// An exact normal map for a soup's points.
 auto exact_normal_map(Mesh& mesh, const std::vector<ce_test::Exact_curvature>& exact)
 {
-  auto normals = mesh.add_property_map<Mesh::Vertex_index, Vector>("v:exact_normal").first;
-  std::size_t i = 0;
-  for (Mesh::Vertex_index v : vertices(mesh)) {
-    const Eigen::Vector3d& n = exact[i++].normal;
-    normals[v] = Vector(n.x(), n.y(), n.z());
-  }
-  return normals;
+  return ce_test::exact_normal_map<Kernel>(mesh, exact);
 }
 
 void print_table_row(const char* name, const Table_errors& t, const ce_test::Table1_row& paper)
@@ -139,7 +82,7 @@ TEST_F(Hamann_table1, ExactNormalsReproducePublishedRmsWithin2Percent)
     Mesh mesh = ce_test::to_mesh<Mesh>(soup);
     const auto exact = ce_test::graph_curvatures(functions[f], soup);
     const Estimates e = estimate(mesh, params::vertex_normal_map(exact_normal_map(mesh, exact)).boundary_neighborhood_rings(2));
-    const Table_errors t = all_vertex_errors(e, exact);
+    const Table_errors t = curvature_errors(e, exact);
     const ce_test::Table1_row& paper = published[f];
     if (paper.k1 == 0) {  // the plane: exact up to rounding
       EXPECT_LT(t.k_max.stats().max, 1e-12) << functions[f].name;
@@ -167,7 +110,7 @@ TEST_F(Hamann_table1, DefaultEstimatedNormalsWithin1_5TimesPublishedExactNormalR
     const Mesh mesh = ce_test::to_mesh<Mesh>(soup);
     const auto exact = ce_test::graph_curvatures(functions[f], soup);
     const Estimates e = estimate(mesh);
-    const Table_errors t = all_vertex_errors(e, exact);
+    const Table_errors t = curvature_errors(e, exact);
     const ce_test::Table1_row& paper = published[f];
     for (Estimation_status s : e.status)
       ASSERT_NE(s, Estimation_status::not_estimable) << functions[f].name;
@@ -188,7 +131,7 @@ TEST_F(Hamann_table1, DefaultEstimatedNormalsWithin1_5TimesPublishedExactNormalR
     const ce_test::Soup soup = ce_test::grid_graph_soup(functions[f], n);
     const Mesh mesh = ce_test::to_mesh<Mesh>(soup);
     const Estimates e = estimate(mesh, params::boundary_neighborhood_rings(2));
-    print_table_row(functions[f].name.c_str(), all_vertex_errors(e, ce_test::graph_curvatures(functions[f], soup)),
+    print_table_row(functions[f].name.c_str(), curvature_errors(e, ce_test::graph_curvatures(functions[f], soup)),
                     published[f]);
   }
 }
@@ -203,8 +146,8 @@ TEST_F(Hamann_table1, AreaWeightedNormalsAreFarWorseAtTheBoundary)
   const auto exact = ce_test::graph_curvatures(trig, soup);
   const Estimates area = estimate(mesh, params::vertex_normal_method(CE::Vertex_normal_method::area_weighted));
   const Estimates fitted = estimate(mesh);
-  const double area_rms = all_vertex_errors(area, exact).mean.stats().rms;
-  const double fitted_rms = all_vertex_errors(fitted, exact).mean.stats().rms;
+  const double area_rms = curvature_errors(area, exact).mean.stats().rms;
+  const double fitted_rms = curvature_errors(fitted, exact).mean.stats().rms;
   std::printf("trigonometric, H RMS: area-weighted normals %.6f, default fitted normals %.6f\n", area_rms, fitted_rms);
   EXPECT_GT(area_rms, 10 * fitted_rms);
 }
@@ -375,8 +318,8 @@ TEST(Paraboloid_fitting, IrregularDelaunayMeshIsFiniteEverywhereAndConverges)
     std::size_t i = 0;
     for (Mesh::Vertex_index v : vertices(mesh))
       border[i++] = static_cast<bool>(CGAL::is_border(v, mesh));
-    const Table_errors all = all_vertex_errors(e, exact);
-    const Table_errors interior = errors(e, exact, [&](std::size_t k) { return !border[k]; });
+    const Table_errors all = curvature_errors(e, exact);
+    const Table_errors interior = curvature_errors(e, exact, [&](std::size_t k) { return !border[k]; });
     const double h = ce_test::mean_edge_length(soup);
     std::printf("Delaunay %5zu points (h %.4f, %zu widened): H RMS all %.2e interior %.2e, K RMS all %.2e interior %.2e",
                 points, h, widened, all.mean.stats().rms, interior.mean.stats().rms, all.gaussian.stats().rms,

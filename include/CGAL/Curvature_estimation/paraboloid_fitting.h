@@ -148,22 +148,16 @@ void paraboloid_fitting_curvatures(const FaceGraph& g,
   using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
   using GT = typename CGAL::GetGeomTraits<FaceGraph, NamedParameters>::type;
   using VPM = typename CGAL::GetVertexPointMap<FaceGraph, NamedParameters>::const_type;
-  using FT = typename GT::FT;
-  using Vector_3 = typename GT::Vector_3;
 
-  constexpr bool want_pcd = internal::has_vertex_principal_curvatures_and_directions_map<NamedParameters>();
-  constexpr bool want_mean = internal::has_vertex_mean_curvature_map<NamedParameters>();
-  constexpr bool want_gaussian = internal::has_vertex_Gaussian_curvature_map<NamedParameters>();
-  constexpr bool want_status = internal::has_parameter<NamedParameters, internal_np::vertex_estimation_status_map_t>();
-  constexpr bool given_normals = internal::has_parameter<NamedParameters, ::CGAL::internal_np::vertex_normal_map_t>();
 
   const internal::Platelet_fit_settings settings =
     internal::platelet_fit_settings(np, "paraboloid_fitting_curvatures");
   const Vertex_normal_method normal_method =
     choose_parameter(get_parameter(np, internal_np::vertex_normal_method), Vertex_normal_method::quadric_fit);
-  if constexpr (!(want_pcd || want_mean || want_gaussian || want_status))
+  if constexpr (!internal::wants_curvature_output<NamedParameters>())
     return;
   else {
+    constexpr bool given_normals = internal::has_parameter<NamedParameters, ::CGAL::internal_np::vertex_normal_map_t>();
     const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                      get_const_property_map(CGAL::vertex_point, g));
     const auto normals = get_parameter(np, CGAL::internal_np::vertex_normal_map);
@@ -175,16 +169,7 @@ void paraboloid_fitting_curvatures(const FaceGraph& g,
       std::remove_const_t<decltype(normals)> normal_map;
 
       // The given normal, read on the calling thread (see for_each_vertex).
-      Eigen::Vector3d load(vertex_descriptor v) const
-      {
-        if constexpr (given_normals) {
-          const auto n = get(normal_map, v);
-          return Eigen::Vector3d(CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z()));
-        } else {
-          (void)v;
-          return Eigen::Vector3d::Zero();
-        }
-      }
+      Eigen::Vector3d load(vertex_descriptor v) const { return internal::load_given_normal<given_normals>(normal_map, v); }
 
       internal::Surface_estimate compute(vertex_descriptor v, const Eigen::Vector3d& given)
       {
@@ -195,20 +180,7 @@ void paraboloid_fitting_curvatures(const FaceGraph& g,
     const Worker worker{internal::Platelet_fitter<FaceGraph, VPM>(g, vpm, settings), normal_method, normals};
 
     internal::for_each_vertex<ConcurrencyTag>(vertices(g), worker,
-      [&](vertex_descriptor v, const internal::Surface_estimate& e) {
-        if constexpr (want_pcd)
-          put(internal::get_vertex_principal_curvatures_and_directions_map(np), v,
-              Principal_curvatures_and_directions<GT>(
-                FT(e.min_curvature), FT(e.max_curvature),
-                Vector_3(e.min_direction.x(), e.min_direction.y(), e.min_direction.z()),
-                Vector_3(e.max_direction.x(), e.max_direction.y(), e.max_direction.z())));
-        if constexpr (want_mean)
-          put(internal::get_vertex_mean_curvature_map(np), v, FT(0.5 * (e.max_curvature + e.min_curvature)));
-        if constexpr (want_gaussian)
-          put(internal::get_vertex_Gaussian_curvature_map(np), v, FT(e.max_curvature * e.min_curvature));
-        if constexpr (want_status)
-          put(get_parameter(np, internal_np::vertex_estimation_status_map), v, e.status);
-      });
+      [&](vertex_descriptor v, const internal::Surface_estimate& e) { internal::put_surface_estimate<GT>(np, v, e); });
   }
 }
 

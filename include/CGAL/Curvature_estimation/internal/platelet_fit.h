@@ -10,6 +10,7 @@
 #include <CGAL/Curvature_estimation/internal/neighborhood.h>
 #include <CGAL/Curvature_estimation/internal/quadric_fit.h>
 #include <CGAL/Curvature_estimation/internal/shape_operator.h>
+#include <CGAL/Curvature_estimation/internal/surface_estimate.h>
 #include <CGAL/Curvature_estimation/internal/tangent_frame.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -68,15 +69,6 @@ Platelet_fit_settings platelet_fit_settings(const NamedParameters& np, const cha
 constexpr int cubic_normal_min_rings = 3;
 constexpr double cubic_normal_condition_factor = 1e3;
 
-struct Surface_estimate
-{
-  Estimation_status status = Estimation_status::not_estimable;
-  double max_curvature = std::numeric_limits<double>::quiet_NaN();
-  double min_curvature = std::numeric_limits<double>::quiet_NaN();
-  Eigen::Vector3d max_direction = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
-  Eigen::Vector3d min_direction = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
-  Eigen::Vector3d normal = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
-};
 
 template <typename FaceGraph, typename VertexPointMap>
 class Platelet_fitter
@@ -117,16 +109,11 @@ public:
   }
 
 private:
-  static Eigen::Vector3d to_eigen(const typename boost::property_traits<VertexPointMap>::reference p)
-  {
-    return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-  }
-
   // The 1-ring, and the local length scale (mean distance to the 1-ring) that
   // makes the fit scale invariant.
   bool gather(vertex_descriptor v)
   {
-    center_ = to_eigen(get(vpm_, v));
+    center_ = point_in_double(vpm_, v);
     if (!center_.allFinite())
       return false;
     rings_.start(v, *g_);
@@ -135,7 +122,7 @@ private:
     double length_sum = 0;
     int length_count = 0;
     for (std::size_t i = 1; i < rings_.ring_end(1); ++i) {
-      const Eigen::Vector3d offset = to_eigen(get(vpm_, rings_.vertices()[i])) - center_;
+      const Eigen::Vector3d offset = point_in_double(vpm_, rings_.vertices()[i]) - center_;
       offsets_.push_back(offset);
       double length = offset.norm();
       if (!(length > 1e-150 && length < 1e150))
@@ -163,7 +150,7 @@ private:
       if (!rings_.extend(*g_))
         return false;
       for (std::size_t i = offsets_.size(); i < rings_.vertices().size(); ++i)
-        offsets_.push_back((to_eigen(get(vpm_, rings_.vertices()[i])) - center_) / scale_);
+        offsets_.push_back((point_in_double(vpm_, rings_.vertices()[i]) - center_) / scale_);
     }
     return true;
   }
@@ -247,13 +234,9 @@ private:
     const Graph_curvature<3> curvature = graph_curvature<3>(fit.hessian(), fit.gradient(), tangents, normal);
     if (!curvature.curvatures.allFinite() || !curvature.directions.allFinite())
       return result;
-    result.status = rings > 1 ? Estimation_status::widened : Estimation_status::ok;
-    result.max_curvature = curvature.curvatures[0] / scale_;
-    result.min_curvature = curvature.curvatures[1] / scale_;
-    result.max_direction = curvature.directions.col(0);
-    result.min_direction = curvature.directions.col(1);
-    result.normal = normal;
-    return result;
+    return Surface_estimate::from_principal(rings > 1 ? Estimation_status::widened : Estimation_status::ok,
+                                            curvature.curvatures[0] / scale_, curvature.curvatures[1] / scale_,
+                                            curvature.directions.col(0), curvature.directions.col(1), normal);
   }
 
   // Samples weighted by a Gaussian of width the mean 1-ring edge in the cubic

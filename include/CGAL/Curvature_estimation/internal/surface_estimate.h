@@ -1,0 +1,107 @@
+// What every surface estimator computes at a vertex, and its writing into the
+// output maps the user passed: one place for the outputs of all estimators.
+#ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_SURFACE_ESTIMATE_H
+#define CGAL_CURVATURE_ESTIMATION_INTERNAL_SURFACE_ESTIMATE_H
+
+#include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
+#include <CGAL/Curvature_estimation/parameters.h>
+
+#include <CGAL/number_utils.h>
+
+#include <Eigen/Core>
+
+#include <limits>
+
+namespace CGAL {
+namespace Curvature_estimation {
+namespace internal {
+
+// The estimate at one vertex. A not-estimable vertex keeps the NaN defaults.
+struct Surface_estimate
+{
+  Estimation_status status = Estimation_status::not_estimable;
+  double max_curvature = std::numeric_limits<double>::quiet_NaN();
+  double min_curvature = std::numeric_limits<double>::quiet_NaN();
+  // K: the product of the principal curvatures, except where an estimator has
+  // its own (the Gauss map's determinant of the differential).
+  double gaussian_curvature = std::numeric_limits<double>::quiet_NaN();
+  Eigen::Vector3d max_direction = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  Eigen::Vector3d min_direction = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  Eigen::Vector3d normal = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+
+  static Surface_estimate from_principal(Estimation_status status, double max_curvature, double min_curvature,
+                                         const Eigen::Vector3d& max_direction, const Eigen::Vector3d& min_direction,
+                                         const Eigen::Vector3d& normal)
+  {
+    Surface_estimate e;
+    e.status = status;
+    e.max_curvature = max_curvature;
+    e.min_curvature = min_curvature;
+    e.gaussian_curvature = max_curvature * min_curvature;
+    e.max_direction = max_direction;
+    e.min_direction = min_direction;
+    e.normal = normal;
+    return e;
+  }
+};
+
+// True when `np` asks for any output of a curvature estimator.
+template <typename NamedParameters>
+constexpr bool wants_curvature_output()
+{
+  return has_vertex_principal_curvatures_and_directions_map<NamedParameters>() ||
+         has_vertex_mean_curvature_map<NamedParameters>() || has_vertex_Gaussian_curvature_map<NamedParameters>() ||
+         has_parameter<NamedParameters, internal_np::vertex_estimation_status_map_t>();
+}
+
+// Writes the outputs that `np` asks for, and only those.
+template <typename GT, typename NamedParameters, typename VertexDescriptor>
+void put_surface_estimate(const NamedParameters& np, VertexDescriptor v, const Surface_estimate& e)
+{
+  using FT = typename GT::FT;
+  using Vector_3 = typename GT::Vector_3;
+  if constexpr (has_vertex_principal_curvatures_and_directions_map<NamedParameters>())
+    put(get_vertex_principal_curvatures_and_directions_map(np), v,
+        Principal_curvatures_and_directions<GT>(
+          FT(e.min_curvature), FT(e.max_curvature),
+          Vector_3(e.min_direction.x(), e.min_direction.y(), e.min_direction.z()),
+          Vector_3(e.max_direction.x(), e.max_direction.y(), e.max_direction.z())));
+  if constexpr (has_vertex_mean_curvature_map<NamedParameters>())
+    put(get_vertex_mean_curvature_map(np), v, FT(0.5 * (e.max_curvature + e.min_curvature)));
+  if constexpr (has_vertex_Gaussian_curvature_map<NamedParameters>())
+    put(get_vertex_Gaussian_curvature_map(np), v, FT(e.gaussian_curvature));
+  if constexpr (has_parameter<NamedParameters, internal_np::vertex_estimation_status_map_t>())
+    put(::CGAL::parameters::get_parameter(np, internal_np::vertex_estimation_status_map), v, e.status);
+  (void)np;
+  (void)v;
+  (void)e;
+}
+
+// The point of `u` in double.
+template <typename VertexPointMap, typename VertexDescriptor>
+Eigen::Vector3d point_in_double(const VertexPointMap& vpm, VertexDescriptor u)
+{
+  const auto p = get(vpm, u);
+  return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+}
+
+// The given normal at `v` in double (read on the calling thread, see
+// for_each_vertex), or zero when no normal map is given.
+template <bool given, typename NormalMap, typename VertexDescriptor>
+Eigen::Vector3d load_given_normal(const NormalMap& normals, VertexDescriptor v)
+{
+  if constexpr (given) {
+    const auto n = get(normals, v);
+    return Eigen::Vector3d(CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z()));
+  } else {
+    (void)normals;
+    (void)v;
+    return Eigen::Vector3d::Zero();
+  }
+}
+
+} // namespace internal
+} // namespace Curvature_estimation
+} // namespace CGAL
+
+#endif // CGAL_CURVATURE_ESTIMATION_INTERNAL_SURFACE_ESTIMATE_H
