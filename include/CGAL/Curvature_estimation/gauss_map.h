@@ -1,0 +1,222 @@
+// Chen, Wu and Chi's estimator: the differential of the Gauss map, on any FaceGraph.
+#ifndef CGAL_CURVATURE_ESTIMATION_GAUSS_MAP_H
+#define CGAL_CURVATURE_ESTIMATION_GAUSS_MAP_H
+
+#include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
+#include <CGAL/Curvature_estimation/parameters.h>
+#include <CGAL/Curvature_estimation/vertex_normals.h>
+#include <CGAL/Curvature_estimation/internal/for_each_vertex.h>
+#include <CGAL/Curvature_estimation/internal/gauss_map_differential.h>
+#include <CGAL/Curvature_estimation/internal/platelet_fit.h>
+#include <CGAL/Curvature_estimation/internal/shape_matrix_estimate.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <limits>
+#include <type_traits>
+
+namespace CGAL {
+namespace Curvature_estimation {
+
+/// \ingroup PkgCurvatureEstimationRef
+///
+/// Estimates principal curvatures and directions, mean and Gaussian curvature at
+/// every vertex of a surface mesh by the differential of the Gauss map (Chen, Wu
+/// and Chi 2005). The three components of the vertex normals are interpolated
+/// linearly over each corner (the vertex and its two neighbours in an incident
+/// face); their gradients (the paper's eqs. 19-21) form the 3x3 Jacobian of the
+/// normal on that face; the Jacobians are averaged with centroid weights
+/// `1/|G_f - v|^2` (eq. 23) and projected on a tangent frame of the vertex
+/// normal (eq. 28), giving a 2x2 matrix `A`.
+/// `H = tr(A)/2` (the paper's `-tr(A)/2` is for
+/// the normal pointing toward the centre of curvature), `K = det A`, and
+/// the principal curvatures and directions are the eigenvalues and eigenvectors of
+/// the symmetric part of `A` (so `max_curvature * min_curvature` may
+/// differ from K by the square of A's antisymmetric part).
+/// Boundary vertices use the faces they have, and faces may be any polygons, as
+/// the paper claims.
+///
+/// **Normals.** The estimate divides differences of neighbouring normals by edge
+/// lengths, so its accuracy is that of the normals divided by h: with exact
+/// normals the estimate converges, with first-order normals (any average of face
+/// normals on an irregular mesh or at a boundary) its error is O(1). Normals come
+/// from `vertex_normal_map` when given (at the vertex and at its neighbours).
+/// Otherwise they are estimated once per vertex by `vertex_normal_method`, whose
+/// default here is `Vertex_normal_method::quadric_fit` (second order, also at
+/// boundary vertices). Measured on a torus (R = 3, r = 1, 48x24 and 96x48 vertices; the test
+/// `Gauss_map.ErrorWithEachNormalChoiceOnRegularAndJitteredTorus` prints the table):
+/// on the regular mesh every choice gives the error of the exact normals (2.2e-3 RMS
+/// on H at 96x48: the symmetric stencils cancel the first-order normal errors), on
+/// the jittered mesh (offsets up to 0.2 of the spacing) the exact normals give 2.7e-3,
+/// `quadric_fit` 3.0e-3, and the face averages 3.1e-2 (`angle_weighted`), 6.6e-2
+/// (`centroid_weighted`, the paper's) and 7.6e-2 (`area_weighted`), the same at both
+/// resolutions: they do not converge. Hence `quadric_fit`. A vertex where the fit is
+/// impossible even over the widest ring (a tiny component, such as the rim of a
+/// lone fan) falls back to the area-weighted normal the fit starts from, so that it
+/// does not deprive its neighbours of an estimate; first order there.
+///
+/// **Conventions.** Curvatures are positive where the surface bends away from the
+/// normal (a sphere with outward normals has `max_curvature == min_curvature == 1/r`),
+/// `max_curvature >= min_curvature`, directions are unit, tangent and orthogonal.
+/// Scaling the mesh by s scales the curvatures by 1/s, to rounding. A vertex
+/// that cannot be estimated (isolated, without a normal, non-finite point, no
+/// incident face with a non-degenerate corner and normals at its corner) gets NaN
+/// in every output and the status `Estimation_status::not_estimable`.
+///
+/// Only the outputs whose maps are passed are written; passing none does nothing.
+///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (default), `CGAL::Parallel_tag` or
+///         `CGAL::Parallel_if_available_tag`. Sequential and parallel runs give
+///         identical results. In parallel the vertex point map is read from several
+///         threads; every other map is read and written by the calling thread only.
+/// \tparam FaceGraph a model of `FaceGraph` (faces may be any polygons).
+/// \tparam NamedParameters a sequence of named parameters, built with the functions of `CGAL::Curvature_estimation::parameters`
+///
+/// \param g the mesh
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `g`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
+///                    as key type and `%Point_3` as value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, g)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class}
+///     \cgalParamType{a class model of `Kernel`}
+///     \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_normal_map}
+///     \cgalParamDescription{normals at the vertices, trusted as given (they need not be unit)}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
+///                    as key type and `GT::Vector_3` as value type}
+///     \cgalParamDefault{normals estimated by `vertex_normal_method`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_normal_method}
+///     \cgalParamDescription{how normals are estimated when no `vertex_normal_map` is given (see `estimate_vertex_normals()`)}
+///     \cgalParamType{`CGAL::Curvature_estimation::Vertex_normal_method`}
+///     \cgalParamDefault{`Vertex_normal_method::quadric_fit`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{neighborhood_rings}
+///     \cgalParamDescription{`quadric_fit` normals only: rings an interior vertex's fit starts with}
+///     \cgalParamType{`int`, at least 1}
+///     \cgalParamDefault{`1`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{boundary_neighborhood_rings}
+///     \cgalParamDescription{`quadric_fit` normals only: rings a boundary vertex's fit starts with}
+///     \cgalParamType{`int`, at least 1}
+///     \cgalParamDefault{the value of `neighborhood_rings`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{max_neighborhood_rings}
+///     \cgalParamDescription{`quadric_fit` normals only: the widest neighbourhood an ill-conditioned fit is widened to}
+///     \cgalParamType{`int`, at least the two values above}
+///     \cgalParamDefault{`3`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{max_condition_number}
+///     \cgalParamDescription{`quadric_fit` normals only: fits whose normal equations have a larger condition
+///                           number are widened (see `paraboloid_fitting_curvatures()`)}
+///     \cgalParamType{`double`, greater than 1}
+///     \cgalParamDefault{`1e3`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_principal_curvatures_and_directions_map}
+///     \cgalParamDescription{output: principal curvatures and directions}
+///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
+///                    as key type and `Principal_curvatures_and_directions<GT>` as value type}
+///     \cgalParamDefault{not computed}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_mean_curvature_map}
+///     \cgalParamDescription{output: mean curvature H = (k1 + k2) / 2}
+///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
+///                    as key type and `GT::FT` as value type}
+///     \cgalParamDefault{not computed}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_Gaussian_curvature_map}
+///     \cgalParamDescription{output: Gaussian curvature K = det A (see above)}
+///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
+///                    as key type and `GT::FT` as value type}
+///     \cgalParamDefault{not computed}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_estimation_status_map}
+///     \cgalParamDescription{output: the outcome at each vertex (`ok` or `not_estimable`)}
+///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
+///                    as key type and `CGAL::Curvature_estimation::Estimation_status` as value type}
+///     \cgalParamDefault{not computed}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \throws std::invalid_argument if a parameter is out of its range.
+template <typename ConcurrencyTag = CGAL::Sequential_tag,
+          typename FaceGraph,
+          typename NamedParameters = parameters::Default_named_parameters>
+void gauss_map_curvatures(const FaceGraph& g, const NamedParameters& np = parameters::default_values())
+{
+  using ::CGAL::parameters::choose_parameter;
+  using ::CGAL::parameters::get_parameter;
+  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
+  using GT = typename CGAL::GetGeomTraits<FaceGraph, NamedParameters>::type;
+  using VPM = typename CGAL::GetVertexPointMap<FaceGraph, NamedParameters>::const_type;
+  constexpr bool given_normals = internal::has_parameter<NamedParameters, ::CGAL::internal_np::vertex_normal_map_t>();
+
+  const internal::Platelet_fit_settings settings = internal::platelet_fit_settings(np, "gauss_map_curvatures");
+  const Vertex_normal_method normal_method =
+    choose_parameter(get_parameter(np, internal_np::vertex_normal_method), Vertex_normal_method::quadric_fit);
+  if constexpr (!internal::wants_curvature_output<NamedParameters>())
+    return;
+  else {
+    const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                     get_const_property_map(CGAL::vertex_point, g));
+    const Eigen::Vector3d no_normal = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+
+    // First pass: every vertex's unit normal, since each is used by all its neighbours.
+    internal::Vertex_normal_table<FaceGraph> normals;
+    normals.reserve(num_vertices(g));
+    if constexpr (given_normals) {
+      const auto normal_map = get_parameter(np, CGAL::internal_np::vertex_normal_map);
+      for (vertex_descriptor v : vertices(g)) {
+        const Eigen::Vector3d n = internal::load_given_normal<true>(normal_map, v);
+        const double length = n.norm();
+        normals.emplace(v, length > 0 && std::isfinite(length) ? Eigen::Vector3d(n / length) : no_normal);
+      }
+    } else {
+      struct Normal_worker
+      {
+        internal::Platelet_fitter<FaceGraph, VPM> fitter;
+        Vertex_normal_method method;
+        bool load(vertex_descriptor) const { return true; }
+        Eigen::Vector3d compute(vertex_descriptor v, bool)
+        {
+          // Where the fit is impossible (a tiny component: too few or ill-conditioned
+          // neighbours up to the widest ring), its uncorrected starting normal.
+          Eigen::Vector3d n;
+          if (fitter.normal(v, method, n) ||
+              (method == Vertex_normal_method::quadric_fit && fitter.normal(v, Vertex_normal_method::area_weighted, n)))
+            return n;
+          return Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+        }
+      };
+      internal::for_each_vertex<ConcurrencyTag>(
+        vertices(g), Normal_worker{internal::Platelet_fitter<FaceGraph, VPM>(g, vpm, settings), normal_method},
+        [&](vertex_descriptor v, const Eigen::Vector3d& n) { normals.emplace(v, n); });
+    }
+
+    // Second pass: the differential at each vertex.
+    struct Worker
+    {
+      internal::Gauss_map_estimator<FaceGraph, VPM> estimator;
+      bool load(vertex_descriptor) const { return true; }
+      internal::Surface_estimate compute(vertex_descriptor v, bool) { return estimator.estimate(v); }
+    };
+    internal::for_each_vertex<ConcurrencyTag>(
+      vertices(g), Worker{internal::Gauss_map_estimator<FaceGraph, VPM>(g, vpm, normals)},
+      [&](vertex_descriptor v, const internal::Surface_estimate& e) { internal::put_surface_estimate<GT>(np, v, e); });
+  }
+}
+
+} // namespace Curvature_estimation
+} // namespace CGAL
+
+#endif // CGAL_CURVATURE_ESTIMATION_GAUSS_MAP_H

@@ -1,0 +1,58 @@
+// Euler's theorem fitted to normal curvatures: the one least-squares core of the
+// estimators that measure normal curvatures along tangent directions (Chen and
+// Schmitt 1992; Wollmann 2000).
+#ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_EULER_FIT_H
+#define CGAL_CURVATURE_ESTIMATION_INTERNAL_EULER_FIT_H
+
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
+
+namespace CGAL {
+namespace Curvature_estimation {
+namespace internal {
+
+// The normal curvature along the unit tangent (x, y) of a tangent frame is
+//   k_n = S11 x^2 + 2 S12 x y + S22 y^2
+// for the symmetric second fundamental form S (Euler's theorem, k_n(phi) =
+// k1 cos^2 phi + k2 sin^2 phi, written linearly in S; its eigen-decomposition is
+// the (k1, k2, phi) of the papers, without their case distinctions). Three
+// directions determine S exactly, more by least squares.
+class Euler_fit
+{
+public:
+  void add(const Eigen::Vector2d& unit_direction, double normal_curvature)
+  {
+    const double x = unit_direction.x(), y = unit_direction.y();
+    const Eigen::Vector3d row(x * x, 2 * x * y, y * y);
+    normal_matrix_ += row * row.transpose();
+    right_hand_side_ += normal_curvature * row;
+  }
+
+  // S, or false when the directions do not determine it: the 2-norm condition
+  // number of the sample rows (the square root of the normal matrix's) exceeds
+  // `max_condition`. Three directions 60 degrees apart give about 2; it grows
+  // without bound as directions come together modulo pi.
+  bool solve(double max_condition, Eigen::Matrix2d& shape) const
+  {
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(normal_matrix_);
+    const Eigen::Vector3d values = eigen.eigenvalues();
+    if (eigen.info() != Eigen::Success || !(values[0] > 0) || !(std::sqrt(values[2] / values[0]) <= max_condition))
+      return false;
+    const Eigen::Vector3d s =
+      eigen.eigenvectors() * (eigen.eigenvectors().transpose() * right_hand_side_).cwiseQuotient(values);
+    shape << s[0], s[1], s[1], s[2];
+    return shape.allFinite();
+  }
+
+private:
+  Eigen::Matrix3d normal_matrix_ = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d right_hand_side_ = Eigen::Vector3d::Zero();
+};
+
+} // namespace internal
+} // namespace Curvature_estimation
+} // namespace CGAL
+
+#endif // CGAL_CURVATURE_ESTIMATION_INTERNAL_EULER_FIT_H

@@ -1,0 +1,179 @@
+// The differential of the Gauss map at a vertex (Chen, Wu and Chi 2005, section 4):
+// per-face gradients of the three normal components (eqs. 19-21), combined with
+// centroid weights (eqs. 22-24), projected on a tangent frame (eq. 28).
+#ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_GAUSS_MAP_DIFFERENTIAL_H
+#define CGAL_CURVATURE_ESTIMATION_INTERNAL_GAUSS_MAP_DIFFERENTIAL_H
+
+#include <CGAL/Curvature_estimation/internal/shape_matrix_estimate.h>
+#include <CGAL/Curvature_estimation/internal/tangent_frame.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <boost/functional/hash.hpp>
+#include <boost/graph/graph_traits.hpp>
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <unordered_map>
+
+namespace CGAL {
+namespace Curvature_estimation {
+namespace internal {
+
+// Accumulates sum_f w_f J_f / sum_f w_f, where J_f is the 3x3 Jacobian of the
+// normal on face f at the corner of the vertex p: the linear interpolation of N
+// over the corner (p, q_j, q_k) has dN(u) = J_f u with
+//   J_f = [N_j - N_p, N_k - N_p] Gram^-1 [q_j - p, q_k - p]^T     (eqs. 19-21),
+// whose row c is the gradient of the component n_c; w_f = 1 / |G_f - p|^2 (eq. 23).
+// Pure and allocation-free: the corner data are given relative to p.
+class Gauss_map_differential
+{
+public:
+  void clear()
+  {
+    sum_ = infinite_sum_ = Eigen::Matrix3d::Zero();
+    weight_sum_ = 0;
+    infinite_count_ = 0;
+  }
+
+  // One face at p: `e_next`, `e_prev` the offsets of the face's vertices after and
+  // before p, `dn_next`, `dn_prev` their normals minus p's, `centroid` the offset
+  // of the face's centroid. A corner whose edges are (nearly) parallel gives no
+  // gradient and is skipped. A face whose centroid is p (a non-convex polygon) has
+  // an infinite weight: such faces alone then give the result.
+  void add_corner(const Eigen::Vector3d& e_next, const Eigen::Vector3d& e_prev, const Eigen::Vector3d& dn_next,
+                  const Eigen::Vector3d& dn_prev, const Eigen::Vector3d& centroid)
+  {
+    const double a = e_next.squaredNorm(), b = e_next.dot(e_prev), c = e_prev.squaredNorm();
+    const double det = a * c - b * b;
+    if (!(det > 1e-24 * a * c) || !std::isfinite(det))
+      return;
+    Eigen::Matrix<double, 3, 2> dn, edges;
+    dn << dn_next, dn_prev;
+    edges << e_next, e_prev;
+    Eigen::Matrix2d inverse_gram;
+    inverse_gram << c, -b, -b, a;
+    inverse_gram /= det;
+    const Eigen::Matrix3d jacobian = dn * inverse_gram * edges.transpose();
+    if (!jacobian.allFinite())
+      return;
+    const double w = 1 / centroid.squaredNorm();
+    if (std::isfinite(w)) {
+      sum_ += w * jacobian;
+      weight_sum_ += w;
+    } else {
+      infinite_sum_ += jacobian;
+      ++infinite_count_;
+    }
+  }
+
+  bool empty() const { return infinite_count_ == 0 && !(weight_sum_ > 0); }
+
+  // The 3x3 differential dN (dN(u) = differential() u).
+  Eigen::Matrix3d differential() const
+  {
+    return infinite_count_ > 0 ? Eigen::Matrix3d(infinite_sum_ / infinite_count_)
+                               : Eigen::Matrix3d(sum_ / weight_sum_);
+  }
+
+  // a_ij = <e_i, dN(e_j)> in the frame (eq. 28); with outward normals a sphere of
+  // radius r gives I / r, the package's sign (the paper's H = -trace/2 is for the
+  // opposite normal).
+  Eigen::Matrix2d shape_matrix(const Tangent_frame& tangents) const
+  {
+    return tangents.transpose() * differential() * tangents;
+  }
+
+private:
+  Eigen::Matrix3d sum_ = Eigen::Matrix3d::Zero(), infinite_sum_ = Eigen::Matrix3d::Zero();
+  double weight_sum_ = 0;
+  int infinite_count_ = 0;
+};
+
+// Unit vertex normals addressed by vertex, filled on the calling thread and then
+// only read (concurrent `find` on a const std::unordered_map is safe). A vertex
+// without a normal holds NaNs.
+template <typename FaceGraph>
+using Vertex_normal_table = std::unordered_map<typename boost::graph_traits<FaceGraph>::vertex_descriptor,
+                                               Eigen::Vector3d,
+                                               boost::hash<typename boost::graph_traits<FaceGraph>::vertex_descriptor>>;
+
+// The Gauss-map estimate at one vertex of a FaceGraph (faces: any polygons;
+// border halfedges are skipped, so boundary vertices use the faces they have).
+template <typename FaceGraph, typename VertexPointMap>
+class Gauss_map_estimator
+{
+public:
+  using Graph_traits = boost::graph_traits<FaceGraph>;
+  using vertex_descriptor = typename Graph_traits::vertex_descriptor;
+  using halfedge_descriptor = typename Graph_traits::halfedge_descriptor;
+
+  Gauss_map_estimator(const FaceGraph& g, VertexPointMap vpm, const Vertex_normal_table<FaceGraph>& normals)
+    : g_(&g), vpm_(vpm), normals_(&normals)
+  {}
+
+  Surface_estimate estimate(vertex_descriptor v)
+  {
+    const FaceGraph& g = *g_;
+    Eigen::Vector3d normal;
+    if (!lookup(v, normal))
+      return Surface_estimate();
+    center_ = point_in_double(vpm_, v);
+    if (!center_.allFinite())
+      return Surface_estimate();
+    scale_ = neighbour_length_scale(v, g, vpm_, center_);
+    if (!(scale_ > 0))
+      return Surface_estimate();
+
+    differential_.clear();
+    for (halfedge_descriptor h : halfedges_around_target(v, g)) {
+      if (is_border(h, g))
+        continue;
+      // Around the face from h (target v): the next vertex, the centroid, and the
+      // previous vertex, source(h).
+      const vertex_descriptor next_vertex = target(next(h, g), g), previous_vertex = source(h, g);
+      Eigen::Vector3d vertex_sum = Eigen::Vector3d::Zero();
+      int n = 0;
+      for (halfedge_descriptor k : halfedges_around_face(h, g)) {
+        vertex_sum += local(target(k, g));
+        ++n;
+      }
+      Eigen::Vector3d next_normal, previous_normal;
+      if (!vertex_sum.allFinite() || !lookup(next_vertex, next_normal) || !lookup(previous_vertex, previous_normal))
+        continue;
+      differential_.add_corner(local(next_vertex), local(previous_vertex), next_normal - normal,
+                               previous_normal - normal, vertex_sum / n);
+    }
+    if (differential_.empty())
+      return Surface_estimate();
+    const Tangent_frame tangents = tangent_basis<3>(normal);
+    return shape_estimate_from_matrix(differential_.shape_matrix(tangents), tangents, normal, scale_, true);
+  }
+
+private:
+  bool lookup(vertex_descriptor u, Eigen::Vector3d& n) const
+  {
+    const auto it = normals_->find(u);
+    if (it == normals_->end() || !it->second.allFinite())
+      return false;
+    n = it->second;
+    return true;
+  }
+
+  Eigen::Vector3d local(vertex_descriptor u) const { return (point_in_double(vpm_, u) - center_) / scale_; }
+
+  const FaceGraph* g_;
+  VertexPointMap vpm_;
+  const Vertex_normal_table<FaceGraph>* normals_;
+  Gauss_map_differential differential_;
+  Eigen::Vector3d center_ = Eigen::Vector3d::Zero();
+  double scale_ = 1;
+};
+
+} // namespace internal
+} // namespace Curvature_estimation
+} // namespace CGAL
+
+#endif // CGAL_CURVATURE_ESTIMATION_INTERNAL_GAUSS_MAP_DIFFERENTIAL_H

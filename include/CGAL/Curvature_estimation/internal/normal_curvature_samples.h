@@ -1,0 +1,225 @@
+// Normal-curvature samples at a vertex, the common input of Taubin's tensor and
+// of Chen and Schmitt's Euler fit (Chen, Wu and Chi 2005, section 3):
+// for every neighbour q_i joined to the vertex p by an edge, the unit tangent
+// t_i (the projection of q_i - p on the tangent plane, eq. 9), the normal
+// curvature of the circle through p and q_i tangent to the plane (eq. 10), and
+// the two candidate weights of the edge (areas and centroid weights of the one
+// or two faces on the edge). Also the vertex loop both baselines share.
+#ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_NORMAL_CURVATURE_SAMPLES_H
+#define CGAL_CURVATURE_ESTIMATION_INTERNAL_NORMAL_CURVATURE_SAMPLES_H
+
+#include <CGAL/Curvature_estimation/parameters.h>
+#include <CGAL/Curvature_estimation/internal/face_average_normal.h>
+#include <CGAL/Curvature_estimation/internal/for_each_vertex.h>
+#include <CGAL/Curvature_estimation/internal/platelet_fit.h>
+#include <CGAL/Curvature_estimation/internal/shape_matrix_estimate.h>
+#include <CGAL/Curvature_estimation/internal/tangent_frame.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/number_utils.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Curvature_estimation {
+namespace internal {
+
+struct Normal_curvature_sample
+{
+  Eigen::Vector2d direction;  // unit tangent t_i in the tangent frame
+  double curvature;           // k_n(t_i), in coordinates divided by the length scale
+  double area_weight;         // sum of the areas of the faces on the edge (p, q_i)
+  double centroid_weight;     // sum of 1 / |G_f - p|^2 over the faces f on the edge
+};
+
+// Gathers the samples of one vertex; allocation-free once `samples` has grown.
+template <typename FaceGraph, typename VertexPointMap>
+class Normal_curvature_sampler
+{
+public:
+  using Graph_traits = boost::graph_traits<FaceGraph>;
+  using vertex_descriptor = typename Graph_traits::vertex_descriptor;
+  using halfedge_descriptor = typename Graph_traits::halfedge_descriptor;
+  using face_descriptor = typename Graph_traits::face_descriptor;
+
+  Normal_curvature_sampler(const FaceGraph& g, VertexPointMap vpm) : g_(&g), vpm_(vpm) {}
+
+  // Fills `samples` at `v` for the unit `normal` and its tangent frame; returns the
+  // length scale of the coordinates (the mean distance from v to its neighbours),
+  // or 0 when v is isolated or its point or all its neighbours are unusable.
+  // Curvatures are positive where the neighbour lies below the tangent plane
+  // (the package's convention: 1/r on a sphere with outward normals).
+  double sample(vertex_descriptor v, const Eigen::Vector3d& normal, const Tangent_frame& tangents,
+                std::vector<Normal_curvature_sample>& samples)
+  {
+    samples.clear();
+    const FaceGraph& g = *g_;
+    center_ = point(v);
+    if (!center_.allFinite())
+      return 0;
+    scale_ = neighbour_length_scale(v, g, vpm_, center_);
+    if (!(scale_ > 0))
+      return 0;
+    for (halfedge_descriptor h : halfedges_around_target(v, g)) {
+      const Eigen::Vector3d d = local(source(h, g));
+      const double d2 = d.squaredNorm();
+      if (!d.allFinite() || !(d2 > 0))
+        continue;
+      Eigen::Vector2d t = tangents.transpose() * d;
+      const double t_norm = t.norm();
+      if (!(t_norm > 0))
+        continue;
+      Normal_curvature_sample s;
+      s.direction = t / t_norm;
+      s.curvature = -2 * normal.dot(d) / d2;
+      s.area_weight = 0;
+      s.centroid_weight = 0;
+      add_face_weights(face(h, g), s);
+      add_face_weights(face(opposite(h, g), g), s);
+      samples.push_back(s);
+    }
+    return scale_;
+  }
+
+private:
+  Eigen::Vector3d point(vertex_descriptor u) const { return point_in_double(vpm_, u); }
+
+  Eigen::Vector3d local(vertex_descriptor u) const { return (point(u) - center_) / scale_; }
+
+  // Area and centroid weight of face f (any polygon: Newell's area, the mean of
+  // the vertices), in the scaled coordinates; degenerate or non-finite faces add nothing.
+  void add_face_weights(face_descriptor f, Normal_curvature_sample& s) const
+  {
+    if (f == Graph_traits::null_face())
+      return;
+    Eigen::Vector3d newell = Eigen::Vector3d::Zero(), vertex_sum = Eigen::Vector3d::Zero();
+    Eigen::Vector3d first = Eigen::Vector3d::Zero(), previous = Eigen::Vector3d::Zero();
+    int n = 0;
+    for (vertex_descriptor u : vertices_around_face(halfedge(f, *g_), *g_)) {
+      const Eigen::Vector3d q = local(u);
+      if (n == 0)
+        first = q;
+      else
+        newell += previous.cross(q);
+      vertex_sum += q;
+      previous = q;
+      ++n;
+    }
+    newell += previous.cross(first);
+    const double area = 0.5 * newell.norm();
+    const double centroid_weight = 1 / (vertex_sum / n).squaredNorm();
+    if (!std::isfinite(area) || !(area > 0) || !std::isfinite(centroid_weight))
+      return;
+    s.area_weight += area;
+    s.centroid_weight += centroid_weight;
+  }
+
+  const FaceGraph* g_;
+  VertexPointMap vpm_;
+  Eigen::Vector3d center_ = Eigen::Vector3d::Zero();
+  double scale_ = 1;
+};
+
+// Taubin's tensor (Taubin 1995; eq. 17): M = sum_i w_i k_i t_i t_i^T with the
+// weights normalised to sum 1; its eigenvalues m1 >= m2 give k1 = 3 m1 - m2,
+// k2 = 3 m2 - m1 with the same eigenvectors, i.e. the shape matrix 4 M - tr(M) I.
+// False when the weights vanish or the tangents do not span the plane.
+inline bool taubin_shape_matrix(const std::vector<Normal_curvature_sample>& samples, bool area_weights,
+                                Eigen::Matrix2d& shape)
+{
+  Eigen::Matrix2d tensor = Eigen::Matrix2d::Zero(), spread = Eigen::Matrix2d::Zero();
+  double weight_sum = 0;
+  for (const Normal_curvature_sample& s : samples) {
+    const double w = area_weights ? s.area_weight : s.centroid_weight;
+    const Eigen::Matrix2d tt = s.direction * s.direction.transpose();
+    tensor += (w * s.curvature) * tt;
+    spread += w * tt;
+    weight_sum += w;
+  }
+  if (!(weight_sum > 0) || !std::isfinite(weight_sum))
+    return false;
+  tensor /= weight_sum;
+  spread /= weight_sum;
+  // det(spread) is sum_{i<j} w_i w_j sin^2(t_i, t_j): zero when all tangents are parallel.
+  if (!(spread.determinant() > 1e-12))
+    return false;
+  shape = 4 * tensor - tensor.trace() * Eigen::Matrix2d::Identity();
+  return true;
+}
+
+// The vertex loop of the estimators built on normal-curvature samples:
+// `solve(samples, shape)` turns the samples of a vertex into its shape matrix
+// (false: not estimable). Normals from the `vertex_normal_map` when given,
+// else by `vertex_normal_method` (default `quadric_fit`).
+template <typename ConcurrencyTag, typename FaceGraph, typename NamedParameters, typename Solve>
+void normal_curvature_sample_curvatures(const FaceGraph& g, const NamedParameters& np, const char* caller,
+                                        Solve solve)
+{
+  using ::CGAL::parameters::choose_parameter;
+  using ::CGAL::parameters::get_parameter;
+  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
+  using GT = typename CGAL::GetGeomTraits<FaceGraph, NamedParameters>::type;
+  using VPM = typename CGAL::GetVertexPointMap<FaceGraph, NamedParameters>::const_type;
+  constexpr bool given_normals = has_parameter<NamedParameters, ::CGAL::internal_np::vertex_normal_map_t>();
+
+  const Platelet_fit_settings settings = platelet_fit_settings(np, caller);
+  const Vertex_normal_method method =
+    choose_parameter(get_parameter(np, internal_np::vertex_normal_method), Vertex_normal_method::quadric_fit);
+  if constexpr (!wants_curvature_output<NamedParameters>())
+    return;
+  else {
+    const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                     get_const_property_map(CGAL::vertex_point, g));
+    const auto normals = get_parameter(np, CGAL::internal_np::vertex_normal_map);
+
+    struct Worker
+    {
+      Platelet_fitter<FaceGraph, VPM> fitter;
+      Normal_curvature_sampler<FaceGraph, VPM> sampler;
+      Vertex_normal_method method;
+      std::remove_const_t<decltype(normals)> normal_map;
+      Solve solve;
+      std::vector<Normal_curvature_sample> samples;
+
+      Eigen::Vector3d load(vertex_descriptor v) const { return load_given_normal<given_normals>(normal_map, v); }
+
+      Surface_estimate compute(vertex_descriptor v, const Eigen::Vector3d& given)
+      {
+        Eigen::Vector3d normal = given;
+        if constexpr (given_normals) {
+          if (!normal.allFinite() || !(normal.norm() > 0))
+            return Surface_estimate();
+          normal.normalize();
+        } else if (!fitter.normal(v, method, normal)) {
+          return Surface_estimate();
+        }
+        const Tangent_frame tangents = tangent_basis<3>(normal);
+        const double scale = sampler.sample(v, normal, tangents, samples);
+        Eigen::Matrix2d shape;
+        if (!(scale > 0) || !solve(samples, shape))
+          return Surface_estimate();
+        return shape_estimate_from_matrix(shape, tangents, normal, scale, false);
+      }
+    };
+
+    const Worker worker{Platelet_fitter<FaceGraph, VPM>(g, vpm, settings), Normal_curvature_sampler<FaceGraph, VPM>(g, vpm),
+                        method, normals, solve, {}};
+    for_each_vertex<ConcurrencyTag>(vertices(g), worker, [&](vertex_descriptor v, const Surface_estimate& e) {
+      put_surface_estimate<GT>(np, v, e);
+    });
+  }
+}
+
+} // namespace internal
+} // namespace Curvature_estimation
+} // namespace CGAL
+
+#endif // CGAL_CURVATURE_ESTIMATION_INTERNAL_NORMAL_CURVATURE_SAMPLES_H

@@ -1,0 +1,88 @@
+// The estimators that end with a 2x2 shape matrix in a tangent frame (Gauss map,
+// Taubin, Chen-Schmitt): curvatures from the matrix, and the local length scale.
+#ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_SHAPE_MATRIX_ESTIMATE_H
+#define CGAL_CURVATURE_ESTIMATION_INTERNAL_SHAPE_MATRIX_ESTIMATE_H
+
+#include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
+#include <CGAL/Curvature_estimation/parameters.h>
+#include <CGAL/Curvature_estimation/internal/platelet_fit.h>
+#include <CGAL/Curvature_estimation/internal/shape_operator.h>
+#include <CGAL/Curvature_estimation/internal/surface_estimate.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/number_utils.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <limits>
+
+namespace CGAL {
+namespace Curvature_estimation {
+namespace internal {
+
+using Tangent_frame = Eigen::Matrix<double, 3, 2>;
+
+// Curvatures and directions from the shape matrix `shape` in the tangent frame
+// `tangents` of the unit `normal`, in the package's convention (the normal
+// curvature along the unit tangent `tangents * x` is x^T sym(shape) x; a sphere
+// with outward normals has the matrix I / r). The matrix is given in coordinates
+// divided by `scale`; K = det(shape) by default (`gaussian_from_determinant`),
+// else the product of the principal curvatures. Not estimable (NaN) when
+// anything is not finite.
+inline Surface_estimate shape_estimate_from_matrix(const Eigen::Matrix2d& shape, const Tangent_frame& tangents,
+                                                 const Eigen::Vector3d& normal, double scale,
+                                                 bool gaussian_from_determinant)
+{
+  if (!shape.allFinite() || !(scale > 0))
+    return Surface_estimate();
+  const Eigen::Matrix2d symmetric = 0.5 * (shape + shape.transpose());
+  Eigen::Vector2d values;
+  Eigen::Matrix2d vectors;
+  symmetric_eigen<2>(symmetric, values, vectors);
+  const double max_curvature = values[1] / scale, min_curvature = values[0] / scale;
+  const double gaussian = gaussian_from_determinant ? shape.determinant() / (scale * scale)
+                                                    : max_curvature * min_curvature;
+  const Eigen::Vector3d max_direction = tangents * vectors.col(1), min_direction = tangents * vectors.col(0);
+  if (!std::isfinite(max_curvature) || !std::isfinite(min_curvature) || !std::isfinite(gaussian) ||
+      !max_direction.allFinite() || !min_direction.allFinite())
+    return Surface_estimate();
+  Surface_estimate result = Surface_estimate::from_principal(Estimation_status::ok, max_curvature, min_curvature,
+                                                             max_direction, min_direction, normal);
+  result.gaussian_curvature = gaussian;
+  return result;
+}
+
+// The local length scale at `v`: the mean distance from `center` (the point of v)
+// to the neighbours joined to v by an edge, ignoring coincident and non-finite
+// ones; 0 when there is none. Coordinates divided by it make the estimators
+// scale invariant.
+template <typename FaceGraph, typename VertexPointMap>
+double neighbour_length_scale(typename boost::graph_traits<FaceGraph>::vertex_descriptor v, const FaceGraph& g,
+                              const VertexPointMap& vpm, const Eigen::Vector3d& center)
+{
+  if (halfedge(v, g) == boost::graph_traits<FaceGraph>::null_halfedge())
+    return 0;
+  double length_sum = 0;
+  int count = 0;
+  for (auto h : halfedges_around_target(v, g)) {
+    const Eigen::Vector3d d = point_in_double(vpm, source(h, g)) - center;
+    double length = d.norm();
+    if (!(length > 1e-150 && length < 1e150))
+      length = d.stableNorm();  // no overflow or underflow for huge or tiny meshes
+    if (std::isfinite(length) && length > 0) {
+      length_sum += length;
+      ++count;
+    }
+  }
+  return count == 0 ? 0 : length_sum / count;
+}
+
+} // namespace internal
+} // namespace Curvature_estimation
+} // namespace CGAL
+
+#endif // CGAL_CURVATURE_ESTIMATION_INTERNAL_SHAPE_MATRIX_ESTIMATE_H

@@ -1,0 +1,165 @@
+// Taubin's estimator of the tensor of curvature (Taubin 1995), on any FaceGraph.
+#ifndef CGAL_CURVATURE_ESTIMATION_TAUBIN_H
+#define CGAL_CURVATURE_ESTIMATION_TAUBIN_H
+
+#include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
+#include <CGAL/Curvature_estimation/parameters.h>
+#include <CGAL/Curvature_estimation/vertex_normals.h>
+#include <CGAL/Curvature_estimation/internal/normal_curvature_samples.h>
+
+#include <CGAL/tags.h>
+
+#include <vector>
+
+namespace CGAL {
+namespace Curvature_estimation {
+
+/// \ingroup PkgCurvatureEstimationRef
+/// The weights of the neighbours in `taubin_curvatures()`. Each neighbour q
+/// joined to the vertex p by an edge is weighted by the faces on the edge (p, q)
+/// (two, or one at the boundary); the weights are normalised to sum 1.
+enum class Neighbor_weighting : unsigned char
+{
+  /// The sum of the areas of the faces on the edge (Taubin 1995).
+  area,
+  /// The sum of the centroid weights `1/|G_f - p|^2` of the faces on the
+  /// edge, `G_f` the centroid of face f (Chen and Wu 2004).
+  centroid
+};
+
+/// \ingroup PkgCurvatureEstimationRef
+///
+/// Estimates principal curvatures and directions, mean and Gaussian curvature at
+/// every vertex of a surface mesh by Taubin's tensor of curvature (Taubin 1995,
+/// as reviewed by Chen, Wu and Chi 2005, section 3.2). For every neighbour
+/// `q_i` joined to the vertex p by an edge, `t_i` is the unit
+/// projection of `q_i - p` on the tangent plane and
+/// `k_i = 2 <p - q_i, N> / |q_i - p|^2` the curvature of the
+/// circle through p and `q_i` tangent to the plane (positive where
+/// `q_i` lies below it: the package's sign). The tensor
+/// `M = \sum_i w_i k_i t_i t_i^T` (weights of `neighbor_weighting`,
+/// summing to 1) has tangent eigenvalues `m_1 >= m_2`; then
+/// `k_1 = 3 m_1 - m_2`, `k_2 = 3 m_2 - m_1`, with the same eigenvectors.
+///
+/// A baseline: its curvature is exact only where the normal curvature samples
+/// cover the directions evenly, and it is not consistent on irregular meshes.
+/// Normals come from `vertex_normal_map` when given, else from
+/// `vertex_normal_method` (default `Vertex_normal_method::quadric_fit`, the
+/// package's second-order normal; Taubin used the area-weighted one, Chen and Wu
+/// the centroid-weighted one: pass them to reproduce their settings).
+///
+/// **Conventions.** A sphere with outward normals has `max_curvature == min_curvature == 1/r`;
+/// `max_curvature >= min_curvature`; directions are unit, tangent and orthogonal;
+/// K is `max_curvature * min_curvature`. A vertex with no normal, or whose
+/// neighbours' tangents do not span the tangent plane, gets NaN in every output
+/// and the status `Estimation_status::not_estimable`.
+///
+/// Only the outputs whose maps are passed are written; passing none does nothing.
+///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (default), `CGAL::Parallel_tag` or
+///         `CGAL::Parallel_if_available_tag`. Sequential and parallel runs give
+///         identical results. In parallel the vertex point map is read from several
+///         threads; every other map is read and written by the calling thread only.
+/// \tparam FaceGraph a model of `FaceGraph` (faces may be any polygons).
+/// \tparam NamedParameters a sequence of named parameters, built with the functions of `CGAL::Curvature_estimation::parameters`
+///
+/// \param g the mesh
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `g`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
+///                    as key type and `%Point_3` as value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, g)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class}
+///     \cgalParamType{a class model of `Kernel`}
+///     \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_normal_map}
+///     \cgalParamDescription{normals at the vertices, trusted as given (they need not be unit)}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
+///                    as key type and `GT::Vector_3` as value type}
+///     \cgalParamDefault{normals estimated by `vertex_normal_method`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_normal_method}
+///     \cgalParamDescription{how normals are estimated when no `vertex_normal_map` is given (see `estimate_vertex_normals()`)}
+///     \cgalParamType{`CGAL::Curvature_estimation::Vertex_normal_method`}
+///     \cgalParamDefault{`Vertex_normal_method::quadric_fit`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{neighborhood_rings}
+///     \cgalParamDescription{`quadric_fit` normals only: rings an interior vertex's fit starts with}
+///     \cgalParamType{`int`, at least 1}
+///     \cgalParamDefault{`1`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{boundary_neighborhood_rings}
+///     \cgalParamDescription{`quadric_fit` normals only: rings a boundary vertex's fit starts with}
+///     \cgalParamType{`int`, at least 1}
+///     \cgalParamDefault{the value of `neighborhood_rings`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{max_neighborhood_rings}
+///     \cgalParamDescription{`quadric_fit` normals only: the widest neighbourhood an ill-conditioned fit is widened to}
+///     \cgalParamType{`int`, at least the two values above}
+///     \cgalParamDefault{`3`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{max_condition_number}
+///     \cgalParamDescription{`quadric_fit` normals only: fits whose normal equations have a larger condition
+///                           number are widened (see `paraboloid_fitting_curvatures()`)}
+///     \cgalParamType{`double`, greater than 1}
+///     \cgalParamDefault{`1e3`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{neighbor_weighting}
+///     \cgalParamDescription{the weights of the neighbours}
+///     \cgalParamType{`CGAL::Curvature_estimation::Neighbor_weighting`}
+///     \cgalParamDefault{`Neighbor_weighting::area` (Taubin's)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_principal_curvatures_and_directions_map}
+///     \cgalParamDescription{output: principal curvatures and directions}
+///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
+///                    as key type and `Principal_curvatures_and_directions<GT>` as value type}
+///     \cgalParamDefault{not computed}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_mean_curvature_map}
+///     \cgalParamDescription{output: mean curvature H = (k1 + k2) / 2}
+///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
+///                    as key type and `GT::FT` as value type}
+///     \cgalParamDefault{not computed}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_Gaussian_curvature_map}
+///     \cgalParamDescription{output: Gaussian curvature K = k1 k2}
+///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
+///                    as key type and `GT::FT` as value type}
+///     \cgalParamDefault{not computed}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_estimation_status_map}
+///     \cgalParamDescription{output: the outcome at each vertex (`ok` or `not_estimable`)}
+///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
+///                    as key type and `CGAL::Curvature_estimation::Estimation_status` as value type}
+///     \cgalParamDefault{not computed}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \throws std::invalid_argument if a parameter is out of its range.
+template <typename ConcurrencyTag = CGAL::Sequential_tag,
+          typename FaceGraph,
+          typename NamedParameters = parameters::Default_named_parameters>
+void taubin_curvatures(const FaceGraph& g, const NamedParameters& np = parameters::default_values())
+{
+  using ::CGAL::parameters::choose_parameter;
+  using ::CGAL::parameters::get_parameter;
+  const bool area_weights =
+    choose_parameter(get_parameter(np, internal_np::neighbor_weighting), Neighbor_weighting::area) ==
+    Neighbor_weighting::area;
+  internal::normal_curvature_sample_curvatures<ConcurrencyTag>(
+    g, np, "taubin_curvatures",
+    [area_weights](const std::vector<internal::Normal_curvature_sample>& samples, Eigen::Matrix2d& shape) {
+      return internal::taubin_shape_matrix(samples, area_weights, shape);
+    });
+}
+
+} // namespace Curvature_estimation
+} // namespace CGAL
+
+#endif // CGAL_CURVATURE_ESTIMATION_TAUBIN_H
