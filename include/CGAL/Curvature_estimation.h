@@ -4,7 +4,11 @@
 
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/parameters.h>
+#include <CGAL/Curvature_estimation/chen_schmitt.h>
+#include <CGAL/Curvature_estimation/curve_network.h>
+#include <CGAL/Curvature_estimation/gauss_map.h>
 #include <CGAL/Curvature_estimation/paraboloid_fitting.h>
+#include <CGAL/Curvature_estimation/taubin.h>
 #include <CGAL/Curvature_estimation/vertex_normals.h>
 
 #endif // CGAL_CURVATURE_ESTIMATION_H
