@@ -32,7 +32,9 @@
   X(max_condition_number_t, max_condition_number)                                     \
   X(neighbor_weighting_t, neighbor_weighting)                                         \
   X(curve_model_t, curve_model)                                                       \
-  X(extrapolation_order_t, extrapolation_order)
+  X(extrapolation_order_t, extrapolation_order)                                       \
+  X(jet_degree_t, jet_degree)                                                         \
+  X(monge_degree_t, monge_degree)
 
 // CGAL's parameters that functions of this package read; re-declared as members
 // so that chaining them never falls back to CGAL's own class.
