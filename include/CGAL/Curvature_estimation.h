@@ -7,6 +7,8 @@
 #include <CGAL/Curvature_estimation/chen_schmitt.h>
 #include <CGAL/Curvature_estimation/curve_network.h>
 #include <CGAL/Curvature_estimation/gauss_map.h>
+#include <CGAL/Curvature_estimation/hypersurface_paraboloid_fitting.h>
+#include <CGAL/Curvature_estimation/jet_fitting.h>
 #include <CGAL/Curvature_estimation/paraboloid_fitting.h>
 #include <CGAL/Curvature_estimation/taubin.h>
 #include <CGAL/Curvature_estimation/vertex_normals.h>

@@ -68,4 +68,37 @@ inline std::ostream& operator<<(std::ostream& os, Estimation_status status)
 } // namespace Curvature_estimation
 } // namespace CGAL
 
+
+namespace CGAL {
+namespace Curvature_estimation {
+
+/// \ingroup PkgCurvatureEstimationRef
+/// The three principal curvatures and principal directions at a vertex of a
+/// 3-dimensional hypersurface of R^4 (a tetrahedral complex whose vertices are points
+/// of R^4, for instance the graph W = f(x, y, z) of a trivariate function).
+///
+/// Conventions: `max_curvature >= mid_curvature >= min_curvature`; the directions are
+/// unit vectors of R^4, tangent (orthogonal to the normal) and orthogonal to each
+/// other. Curvatures are positive where the hypersurface bends away from the normal.
+/// At a vertex whose status is `Estimation_status::not_estimable`, every field is NaN.
+///
+/// \tparam Vector_4 a vector type of R^4: `std::array<double, 4>`, `Eigen::Vector4d`,
+///         or CGAL's `Epick_d<Dimension_tag<4>>::Vector_d` (constructible from a range
+///         of 4 coordinates).
+/// \tparam FT the number type of the curvatures.
+template <typename Vector_4, typename FT_ = double>
+struct Hypersurface_principal_curvatures_and_directions
+{
+  using FT = FT_;
+  FT max_curvature{};
+  FT mid_curvature{};
+  FT min_curvature{};
+  Vector_4 max_direction{};
+  Vector_4 mid_direction{};
+  Vector_4 min_direction{};
+};
+
+} // namespace Curvature_estimation
+} // namespace CGAL
+
 #endif // CGAL_CURVATURE_ESTIMATION_PRINCIPAL_CURVATURES_AND_DIRECTIONS_H
