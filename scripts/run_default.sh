@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Build and run the default example: curvature summary of a mesh
-# (default: the Stanford bunny extracted from CGAL's data archive at configure time).
-# Usage: scripts/run_default.sh [mesh-file]      (env BUILD_DIR overrides ./build)
+# The main job: build the command-line tool `curvature` and print the curvature
+# summary of a mesh (default: the Stanford bunny extracted from CGAL's data
+# archive at configure time, build/data/meshes/bunny00.off).
+# Usage: scripts/run_default.sh [curvature options] [mesh-file]   (env BUILD_DIR overrides ./build)
+#   e.g. scripts/run_default.sh -m gauss-map -o bunny.ply some.off
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -11,5 +13,8 @@ JOBS="${JOBS:-$(nproc 2>/dev/null || echo 2)}"
 
 bash scripts/install_dependencies.sh
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release
-cmake --build "$BUILD_DIR" --target curvature_summary -j "$JOBS"
-"$BUILD_DIR/examples/curvature_summary" "$@"
+cmake --build "$BUILD_DIR" --target curvature -j "$JOBS"
+if [ "$#" -eq 0 ]; then
+  set -- "$BUILD_DIR/data/meshes/bunny00.off"
+fi
+"$BUILD_DIR/tools/curvature" "$@"

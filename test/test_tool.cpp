@@ -1,0 +1,744 @@
+// Tests of the command-line tool `curvature` (tools/curvature.cpp), run as a
+// subprocess on small files written to a temporary directory:
+//  - bad input: non-zero exit, exactly one line on stderr, no output file left;
+//  - accepted degenerate input: one row per file vertex, nan on failed rows;
+//  - the CSV and PLY formats, and the mean curvature of a sphere.
+// tools/CMakeLists.txt defines CE_CURVATURE_TOOL (the built tool's path).
+#include <gtest/gtest.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/PLY.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+#ifdef CE_CURVATURE_TOOL
+const char* const tool_path = CE_CURVATURE_TOOL;
+#else
+const char* const tool_path = nullptr;
+#endif
+
+const char* const csv_header =
+  "k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,status";
+
+struct Result
+{
+  int exit_code = -1;
+  std::string out, err;
+};
+
+std::string read_text(const fs::path& p)
+{
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void write_text(const fs::path& p, const std::string& text)
+{
+  std::ofstream out(p, std::ios::binary);
+  out << text;
+}
+
+std::string quote(const std::string& s)
+{
+  std::string q = "'";
+  for (char c : s)
+    q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+std::size_t count_lines(const std::string& s)
+{
+  std::size_t n = 0;
+  for (char c : s)
+    n += c == '\n';
+  if (!s.empty() && s.back() != '\n')
+    ++n;
+  return n;
+}
+
+struct Row
+{
+  std::array<double, 10> values;
+  std::string status;
+};
+
+class ToolTest : public ::testing::Test
+{
+protected:
+  fs::path dir;
+
+  void SetUp() override
+  {
+    if (!tool_path)
+      GTEST_SKIP() << "the tool is not built (CE_BUILD_TOOLS=OFF)";
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir = fs::temp_directory_path() /
+          ("ce_test_tool_" + std::to_string(::getpid()) + "_" + info->name());
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  void TearDown() override
+  {
+    if (!dir.empty() && !HasFailure())
+      fs::remove_all(dir);
+  }
+
+  fs::path file(const std::string& name, const std::string& text)
+  {
+    const fs::path p = dir / name;
+    write_text(p, text);
+    return p;
+  }
+
+  Result run(const std::vector<std::string>& args)
+  {
+    std::string command = quote(tool_path);
+    for (const auto& a : args)
+      command += " " + quote(a);
+    const fs::path out = dir / ".stdout", err = dir / ".stderr";
+    command += " >" + quote(out.string()) + " 2>" + quote(err.string()) + " </dev/null";
+    const int status = std::system(command.c_str());
+    Result r;
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+    r.out = read_text(out);
+    r.err = read_text(err);
+    fs::remove(out);
+    fs::remove(err);
+    return r;
+  }
+
+  // Non-zero exit (not a crash), one line on stderr, nothing written to `dir`.
+  void expect_rejected(const std::vector<std::string>& input_args, const std::string& what)
+  {
+    const std::vector<std::string> before = listing();
+    for (const std::string ext : {".csv", ".ply"}) {
+      const fs::path output = dir / ("out" + ext);
+      std::vector<std::string> args = input_args;
+      args.push_back("-o");
+      args.push_back(output.string());
+      const Result r = run(args);
+      EXPECT_NE(r.exit_code, 0) << what;
+      EXPECT_LT(r.exit_code, 128) << what << ": crashed (signal " << r.exit_code - 128 << ")";
+      EXPECT_EQ(count_lines(r.err), 1u) << what << ": stderr was [" << r.err << "]";
+      EXPECT_NE(r.err.find("error"), std::string::npos) << what << ": " << r.err;
+      EXPECT_FALSE(fs::exists(output)) << what;
+      EXPECT_EQ(listing(), before) << what << ": a file was left in the directory";
+    }
+    // And without -o (summary mode): the same failure.
+    const Result r = run(input_args);
+    EXPECT_NE(r.exit_code, 0) << what;
+    EXPECT_EQ(count_lines(r.err), 1u) << what << ": stderr was [" << r.err << "]";
+  }
+
+  std::vector<std::string> listing() const
+  {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir))
+      names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
+  // Runs the tool to a CSV and parses it, checking its format.
+  std::vector<Row> csv(const fs::path& input, std::vector<std::string> extra = {})
+  {
+    const fs::path output = dir / "rows.csv";
+    fs::remove(output);
+    std::vector<std::string> args = extra;
+    args.insert(args.end(), {"-o", output.string(), input.string()});
+    const Result r = run(args);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    std::vector<Row> rows;
+    std::istringstream in(read_text(output));
+    std::string line;
+    if (!std::getline(in, line)) {
+      ADD_FAILURE() << "no CSV written for " << input;
+      return rows;
+    }
+    EXPECT_EQ(line, csv_header);
+    while (std::getline(in, line)) {
+      Row row;
+      std::istringstream fields(line);
+      std::string field;
+      for (std::size_t i = 0; i < 10; ++i) {
+        if (!std::getline(fields, field, ',')) {
+          ADD_FAILURE() << "short row: " << line;
+          return rows;
+        }
+        char* end = nullptr;
+        row.values[i] = std::strtod(field.c_str(), &end);
+        EXPECT_TRUE(!field.empty() && *end == '\0') << "not a number: '" << field << "' in " << line;
+        if (field.find("nan") != std::string::npos) {
+          EXPECT_EQ(field, "nan") << line;
+        }
+      }
+      EXPECT_TRUE(std::getline(fields, row.status)) << line;
+      EXPECT_TRUE(row.status == "ok" || row.status == "widened" || row.status == "failed") << line;
+      EXPECT_FALSE(std::getline(fields, field)) << "too many fields: " << line;
+      rows.push_back(row);
+    }
+    return rows;
+  }
+};
+
+// Failed rows are all nan, the others all finite, with k_max >= k_min.
+void expect_consistent(const std::vector<Row>& rows, const std::string& what)
+{
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const Row& r = rows[i];
+    for (double x : r.values) {
+      if (r.status == "failed") {
+        EXPECT_TRUE(std::isnan(x)) << what << ", row " << i;
+      } else {
+        EXPECT_TRUE(std::isfinite(x)) << what << ", row " << i;
+      }
+    }
+    if (r.status != "failed") {
+      EXPECT_GE(r.values[0], r.values[1]) << what << ", row " << i;
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Meshes
+// ---------------------------------------------------------------------------
+
+struct Indexed
+{
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::vector<std::size_t>> faces;
+};
+
+// Icosphere of radius r (outward faces), `levels` subdivisions of an icosahedron.
+Indexed icosphere(int levels, double r)
+{
+  Indexed m;
+  const double t = (1 + std::sqrt(5.0)) / 2;
+  m.points = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+              {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  m.faces = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+             {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
+             {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+  auto normalize = [&](std::array<double, 3> p) {
+    const double n = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    return std::array<double, 3>{r * p[0] / n, r * p[1] / n, r * p[2] / n};
+  };
+  for (auto& p : m.points)
+    p = normalize(p);
+  for (int l = 0; l < levels; ++l) {
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> midpoints;
+    auto mid = [&](std::size_t a, std::size_t b) {
+      const auto key = std::minmax(a, b);
+      auto it = midpoints.find(key);
+      if (it != midpoints.end())
+        return it->second;
+      const auto& p = m.points[a];
+      const auto& q = m.points[b];
+      m.points.push_back(normalize({p[0] + q[0], p[1] + q[1], p[2] + q[2]}));
+      midpoints[key] = m.points.size() - 1;
+      return m.points.size() - 1;
+    };
+    std::vector<std::vector<std::size_t>> faces;
+    for (const auto& f : m.faces) {
+      const std::size_t a = mid(f[0], f[1]), b = mid(f[1], f[2]), c = mid(f[2], f[0]);
+      faces.push_back({f[0], a, c});
+      faces.push_back({f[1], b, a});
+      faces.push_back({f[2], c, b});
+      faces.push_back({a, b, c});
+    }
+    m.faces = faces;
+  }
+  return m;
+}
+
+// A closed tetrahedron with outward faces, scaled and shifted.
+Indexed tetrahedron(double s = 1, double dx = 0)
+{
+  return Indexed{{{dx, 0, 0}, {dx + s, 0, 0}, {dx, s, 0}, {dx, 0, s}},
+                 {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}};
+}
+
+void append(Indexed& a, const Indexed& b)
+{
+  const std::size_t offset = a.points.size();
+  a.points.insert(a.points.end(), b.points.begin(), b.points.end());
+  for (auto f : b.faces) {
+    for (auto& i : f)
+      i += offset;
+    a.faces.push_back(f);
+  }
+}
+
+std::string off(const Indexed& m)
+{
+  std::ostringstream s;
+  s.precision(17);
+  s << "OFF\n" << m.points.size() << ' ' << m.faces.size() << " 0\n";
+  for (const auto& p : m.points)
+    s << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  for (const auto& f : m.faces) {
+    s << f.size();
+    for (auto i : f)
+      s << ' ' << i;
+    s << '\n';
+  }
+  return s.str();
+}
+
+std::string obj(const Indexed& m)
+{
+  std::ostringstream s;
+  s.precision(17);
+  for (const auto& p : m.points)
+    s << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  for (const auto& f : m.faces) {
+    s << 'f';
+    for (auto i : f)
+      s << ' ' << i + 1;
+    s << '\n';
+  }
+  return s.str();
+}
+
+// Binary STL of the faces of m (triangles), with the given float coordinates.
+std::string binary_stl(const Indexed& m)
+{
+  std::string s(80, ' ');
+  std::memcpy(&s[0], "binary stl written by test_tool", 31);
+  const std::uint32_t n = static_cast<std::uint32_t>(m.faces.size());
+  s.append(reinterpret_cast<const char*>(&n), 4);
+  for (const auto& f : m.faces) {
+    float values[12] = {0, 0, 0};
+    for (int k = 0; k < 3; ++k)
+      for (int c = 0; c < 3; ++c)
+        values[3 + 3 * k + c] = static_cast<float>(m.points[f[k]][c]);
+    s.append(reinterpret_cast<const char*>(values), sizeof values);
+    s.append(2, '\0');
+  }
+  return s;
+}
+
+const std::vector<std::string> methods = {"paraboloid", "curve-network", "gauss-map", "taubin", "chen-schmitt"};
+
+// ---------------------------------------------------------------------------
+// Bad input
+// ---------------------------------------------------------------------------
+
+TEST_F(ToolTest, MissingFile) { expect_rejected({(dir / "no_such_file.off").string()}, "missing file"); }
+
+TEST_F(ToolTest, UnreadableFile)
+{
+  fs::create_directories(dir / "a_directory.off");  // exists, cannot be read as a file (also as root)
+  expect_rejected({(dir / "a_directory.off").string()}, "unreadable file");
+}
+
+TEST_F(ToolTest, UnknownExtension)
+{
+  expect_rejected({file("mesh.xyz", off(tetrahedron())).string()}, "unknown extension");
+  expect_rejected({file("mesh", off(tetrahedron())).string()}, "no extension");
+}
+
+TEST_F(ToolTest, TetrahedralInputNotSupportedYet)
+{
+  const fs::path p = file("cube.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices\n0\nEnd\n");
+  expect_rejected({p.string()}, ".mesh");
+  const Result r = run({p.string()});
+  EXPECT_NE(r.err.find("not supported yet"), std::string::npos) << r.err;
+}
+
+TEST_F(ToolTest, JetNotImplementedYet)
+{
+  const fs::path p = file("tet.off", off(tetrahedron()));
+  expect_rejected({"-m", "jet", p.string()}, "jet");
+  const Result r = run({"-m", "jet", p.string()});
+  EXPECT_NE(r.err.find("not implemented yet"), std::string::npos) << r.err;
+}
+
+TEST_F(ToolTest, BadOptions)
+{
+  const fs::path p = file("tet.off", off(tetrahedron()));
+  expect_rejected({"-m", "nonsense", p.string()}, "unknown method");
+  expect_rejected({"--rings", "0", p.string()}, "rings 0");
+  expect_rejected({"--rings", "x", p.string()}, "rings x");
+  expect_rejected({"-m", "curve-network", "--order", "5", p.string()}, "order 5");
+  expect_rejected({"--order", "2", p.string()}, "order without curve-network");
+  expect_rejected({"--color-by", "blue", p.string()}, "color-by");
+  expect_rejected({"--bogus", p.string()}, "unknown option");
+  expect_rejected({}, "no input");
+  const Result r = run({"-o", (dir / "out.txt").string(), p.string()});
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_FALSE(fs::exists(dir / "out.txt"));
+}
+
+TEST_F(ToolTest, GarbageFiles)
+{
+  const std::string garbage = "this is not a mesh\n\x01\x02\x03\xff\xfe garbage 12 ; ,,\n";
+  for (const std::string ext : {".off", ".ply", ".obj", ".stl"})
+    expect_rejected({file("garbage" + ext, garbage).string()}, "garbage " + ext);
+  expect_rejected({file("zero_bytes.off", "").string()}, "zero-byte file");
+}
+
+TEST_F(ToolTest, TruncatedFiles)
+{
+  const std::string full = off(icosphere(1, 1));
+  expect_rejected({file("truncated_vertices.off", full.substr(0, full.size() / 3)).string()}, "truncated OFF (vertices)");
+  expect_rejected({file("truncated_faces.off", full.substr(0, full.size() - 12)).string()}, "truncated OFF (faces)");
+  expect_rejected({file("header_only.off", "OFF\n4 4 0\n").string()}, "OFF header only");
+  expect_rejected({file("huge_header.off", "OFF\n2000000000 2000000000 0\n0 0 0\n").string()}, "OFF huge counts");
+  const std::string stl = binary_stl(icosphere(1, 1));
+  expect_rejected({file("truncated.stl", stl.substr(0, stl.size() / 2)).string()}, "truncated binary STL");
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                          "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n"
+                          "0 0 0\n1 0 0\n0 1 0\n";
+  expect_rejected({file("truncated.ply", ply).string()}, "truncated PLY");
+}
+
+TEST_F(ToolTest, IndicesOutOfRange)
+{
+  Indexed m = tetrahedron();
+  m.faces.push_back({0, 1, 7});
+  expect_rejected({file("range.off", off(m)).string()}, "OFF index out of range");
+  expect_rejected({file("range.obj", obj(m)).string()}, "OBJ index out of range");
+  expect_rejected({file("negative.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 -1\n").string()}, "OFF negative index");
+  expect_rejected({file("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n").string()}, "OBJ index 0");
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                          "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                          "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n";
+  expect_rejected({file("range.ply", ply).string()}, "PLY index out of range");
+}
+
+TEST_F(ToolTest, EmptyMesh)
+{
+  expect_rejected({file("empty.off", "OFF\n0 0 0\n").string()}, "empty OFF");
+  expect_rejected({file("points_only.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n").string()}, "OFF without faces");
+  expect_rejected({file("empty.obj", "# nothing\n").string()}, "empty OBJ");
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\n"
+                          "property float z\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n";
+  expect_rejected({file("empty.ply", ply).string()}, "empty PLY");
+  std::string stl(80, ' ');
+  stl.append(4, '\0');
+  expect_rejected({file("empty.stl", stl).string()}, "empty binary STL");
+}
+
+TEST_F(ToolTest, NonFiniteCoordinates)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  for (double bad : {nan, inf, -inf}) {
+    Indexed m = icosphere(1, 1);
+    m.points[5][1] = bad;
+    const std::string name = std::isnan(bad) ? "nan" : bad > 0 ? "inf" : "minus_inf";
+    const fs::path stl = file(name + ".stl", binary_stl(m));
+    expect_rejected({stl.string()}, "binary STL with " + name);
+    // Binary STL reaches the tool's own check: the message names the problem.
+    const Result r = run({stl.string()});
+    EXPECT_NE(r.err.find("non-finite"), std::string::npos) << r.err;
+    // As text (the readers may reject the token itself; either way it is an error).
+    expect_rejected({file(name + ".off", off(m)).string()}, "OFF with " + name);
+    expect_rejected({file(name + ".obj", obj(m)).string()}, "OBJ with " + name);
+  }
+  expect_rejected({file("overflow.off", "OFF\n3 1 0\n0 0 0\n1e400 0 0\n0 1 0\n3 0 1 2\n").string()}, "OFF overflow");
+}
+
+TEST_F(ToolTest, ExistingOutputIsKeptOnError)
+{
+  const fs::path output = file("keep.csv", "previous content\n");
+  const Result r = run({"-o", output.string(), (dir / "missing.off").string()});
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(read_text(output), "previous content\n");
+}
+
+// ---------------------------------------------------------------------------
+// Accepted degenerate input: one row per file vertex, for every method
+// ---------------------------------------------------------------------------
+
+class DegenerateTest : public ToolTest
+{
+public:
+  std::vector<std::vector<Row>> all_methods(const fs::path& input, std::size_t vertices, const std::string& what)
+  {
+    std::vector<std::vector<Row>> result;
+    for (const auto& m : methods) {
+      const std::vector<Row> rows = csv(input, {"-m", m});
+      EXPECT_EQ(rows.size(), vertices) << what << ", " << m;
+      expect_consistent(rows, what + ", " + m);
+      result.push_back(rows);
+    }
+    return result;
+  }
+};
+
+TEST_F(DegenerateTest, IsolatedVertices)
+{
+  Indexed m = icosphere(1, 1);
+  m.points.insert(m.points.begin(), {5, 5, 5});  // vertex 0 is in no face
+  for (auto& f : m.faces)
+    for (auto& i : f)
+      ++i;
+  m.points.push_back({7, 7, 7});                 // nor is the last one
+  const auto all = all_methods(file("isolated.off", off(m)), m.points.size(), "isolated vertices");
+  for (const auto& rows : all) {
+    ASSERT_EQ(rows.size(), m.points.size());
+    EXPECT_EQ(rows.front().status, "failed");
+    EXPECT_EQ(rows.back().status, "failed");
+    for (std::size_t i = 1; i + 1 < rows.size(); ++i)
+      EXPECT_NE(rows[i].status, "failed") << "row " << i;
+  }
+}
+
+TEST_F(DegenerateTest, DegenerateFaces)
+{
+  Indexed m = icosphere(1, 1);
+  const std::size_t n = m.points.size();
+  // Zero-area faces: three collinear points (a separate component), and a face
+  // repeating an index, and a two-vertex "face".
+  m.points.push_back({3, 0, 0});
+  m.points.push_back({4, 0, 0});
+  m.points.push_back({5, 0, 0});
+  m.faces.push_back({n, n + 1, n + 2});
+  m.faces.push_back({0, 0, 1});
+  m.faces.push_back({2, 3});
+  const auto all = all_methods(file("degenerate.off", off(m)), m.points.size(), "degenerate faces");
+  for (const auto& rows : all)
+    for (std::size_t i = 0; i < n && i < rows.size(); ++i)
+      EXPECT_NE(rows[i].status, "failed") << "sphere row " << i;
+}
+
+TEST_F(DegenerateTest, DuplicatePoints)
+{
+  Indexed m = icosphere(1, 1);
+  // The last vertex is a copy of vertex 0, used by half of vertex 0's faces.
+  m.points.push_back(m.points[0]);
+  const std::size_t copy = m.points.size() - 1;
+  bool flip = false;
+  for (auto& f : m.faces)
+    for (auto& i : f)
+      if (i == 0 && (flip = !flip))
+        i = copy;
+  const auto all = all_methods(file("duplicates.off", off(m)), m.points.size(), "duplicate points");
+  for (const auto& rows : all) {
+    ASSERT_EQ(rows.size(), m.points.size());
+    EXPECT_NE(rows[0].status, "failed");
+    EXPECT_EQ(rows[0].status, rows[copy].status);
+    for (std::size_t k = 0; k < 10; ++k)
+      EXPECT_EQ(rows[0].values[k], rows[copy].values[k]);
+  }
+  // An STL file repeats every point in every triangle: still one row per distinct vertex.
+  const std::vector<Row> stl = csv(file("sphere.stl", binary_stl(icosphere(1, 1))));
+  expect_consistent(stl, "STL");
+  EXPECT_GT(stl.size(), 0u);
+}
+
+TEST_F(DegenerateTest, NonManifoldVertexAndEdge)
+{
+  // Two tetrahedra sharing vertex 0 (a non-manifold vertex).
+  Indexed bowtie = tetrahedron();
+  Indexed other = tetrahedron(1, 0);
+  for (auto& p : other.points)
+    for (auto& c : p)
+      c = -c;
+  other.points.erase(other.points.begin());
+  for (auto& f : other.faces)
+    for (auto& i : f)
+      i = i == 0 ? 0 : i + 3;
+  for (const auto& p : other.points)
+    bowtie.points.push_back(p);
+  for (auto f : other.faces) {
+    std::swap(f[0], f[1]);  // the mirror image reverses orientation: restore outward
+    bowtie.faces.push_back(f);
+  }
+  all_methods(file("bowtie.off", off(bowtie)), bowtie.points.size(), "non-manifold vertex");
+
+  // Three triangles on one edge (0,1): a non-manifold edge.
+  const Indexed fan{{{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 0, 1}},
+                    {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}};
+  all_methods(file("fan.off", off(fan)), fan.points.size(), "non-manifold edge");
+  all_methods(file("fan.obj", obj(fan)), fan.points.size(), "non-manifold edge (OBJ)");
+}
+
+TEST_F(DegenerateTest, InconsistentOrientation)
+{
+  Indexed m = icosphere(1, 1);
+  for (std::size_t f = 0; f < m.faces.size(); f += 3)
+    std::swap(m.faces[f][0], m.faces[f][1]);
+  const auto all = all_methods(file("flipped.off", off(m)), m.points.size(), "inconsistent orientation");
+  for (const auto& rows : all)
+    for (const auto& r : rows)
+      EXPECT_NE(r.status, "failed");
+}
+
+TEST_F(DegenerateTest, BoundaryAndTinyComponents)
+{
+  // A single triangle, a dangling two-vertex face, a tetrahedron and a quad: tiny components.
+  Indexed m{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 2, 2}, {3, 2, 2}}, {{0, 1, 2}, {3, 4}}};
+  append(m, tetrahedron(0.5, 10));
+  append(m, Indexed{{{20, 0, 0}, {21, 0, 0}, {21, 1, 0}, {20, 1, 0}}, {{0, 1, 2, 3}}});
+  // A strip of two triangles: its end vertices have two neighbours, one of them on one face.
+  append(m, Indexed{{{30, 0, 0}, {31, 0, 0}, {30, 1, 0.2}, {31, 1, 0.1}}, {{0, 1, 2}, {1, 3, 2}}});
+  const auto all = all_methods(file("tiny.off", off(m)), m.points.size(), "tiny components");
+  for (const auto& rows : all) {
+    ASSERT_EQ(rows.size(), m.points.size());
+    EXPECT_EQ(rows[3].status, "failed");  // only in the two-vertex face
+    EXPECT_EQ(rows[4].status, "failed");
+  }
+}
+
+TEST_F(ToolTest, ThreadsGiveTheSameRows)
+{
+  const fs::path p = file("sphere.off", off(icosphere(2, 1)));
+  const std::vector<Row> one = csv(p, {"--threads", "1"});
+  const std::vector<Row> two = csv(p, {"--threads", "2"});
+  ASSERT_EQ(one.size(), two.size());
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    EXPECT_EQ(one[i].status, two[i].status);
+    for (std::size_t k = 0; k < 10; ++k)
+      EXPECT_EQ(one[i].values[k], two[i].values[k]) << "row " << i;
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Formats and values
+// ---------------------------------------------------------------------------
+
+TEST_F(ToolTest, SphereMeanCurvatureIsOneOverR)
+{
+  const double r = 2.5;
+  const Indexed m = icosphere(3, r);  // 642 vertices
+  const fs::path p = file("sphere.off", off(m));
+  for (const auto& method : methods) {
+    const std::vector<Row> rows = csv(p, {"-m", method});
+    ASSERT_EQ(rows.size(), m.points.size()) << method;
+    expect_consistent(rows, method);
+    double max_error_H = 0, max_error_K = 0;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      EXPECT_NE(rows[i].status, "failed") << method << ", row " << i;
+      max_error_H = std::max(max_error_H, std::abs(rows[i].values[2] * r - 1));
+      max_error_K = std::max(max_error_K, std::abs(rows[i].values[3] * r * r - 1));
+      // Directions: unit, orthogonal to each other.
+      const auto& v = rows[i].values;
+      EXPECT_NEAR(v[4] * v[4] + v[5] * v[5] + v[6] * v[6], 1, 1e-9);
+      EXPECT_NEAR(v[7] * v[7] + v[8] * v[8] + v[9] * v[9], 1, 1e-9);
+      EXPECT_NEAR(v[4] * v[7] + v[5] * v[8] + v[6] * v[9], 0, 1e-9);
+    }
+    std::cout << method << ": max |H r - 1| = " << max_error_H << ", max |K r^2 - 1| = " << max_error_K << '\n';
+    EXPECT_LT(max_error_H, 0.05) << method;  // positive: outward faces
+    EXPECT_LT(max_error_K, 0.1) << method;
+  }
+}
+
+TEST_F(ToolTest, CsvRowsFollowTheFileOrder)
+{
+  // Same sphere, vertices written in reverse order: rows reverse too.
+  const Indexed m = icosphere(2, 1);
+  Indexed reversed = m;
+  const std::size_t n = m.points.size();
+  for (std::size_t i = 0; i < n; ++i)
+    reversed.points[i] = m.points[n - 1 - i];
+  for (auto& f : reversed.faces)
+    for (auto& i : f)
+      i = n - 1 - i;
+  const std::vector<Row> a = csv(file("a.off", off(m)), {"-m", "gauss-map"});
+  const std::vector<Row> b = csv(file("b.off", off(reversed)), {"-m", "gauss-map"});
+  ASSERT_EQ(a.size(), n);
+  ASSERT_EQ(b.size(), n);
+  for (std::size_t i = 0; i < n; ++i)
+    EXPECT_NEAR(a[i].values[2], b[n - 1 - i].values[2], 1e-12) << i;
+}
+
+TEST_F(ToolTest, PlyOutputReadsBack)
+{
+  Indexed m = icosphere(2, 1);
+  const std::size_t n = m.points.size();
+  const fs::path p = file("sphere.off", off(m));
+  for (const std::string by : {"k_max", "k_min", "mean", "gaussian"}) {
+    const fs::path output = dir / ("sphere_" + by + ".ply");
+    const Result r = run({"-o", output.string(), "--color-by", by, p.string()});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> mesh;
+    std::ifstream in(output, std::ios::binary);
+    ASSERT_TRUE(CGAL::IO::read_PLY(in, mesh)) << by;
+    EXPECT_EQ(num_vertices(mesh), n);
+    EXPECT_EQ(num_faces(mesh), m.faces.size());
+    // The properties are there, with the CSV's values.
+    auto H = mesh.property_map<decltype(mesh)::Vertex_index, double>("v:mean");
+    ASSERT_TRUE(H.second) << "no vertex property 'mean'";
+    const std::vector<Row> rows = csv(p);
+    ASSERT_EQ(rows.size(), n);
+    for (auto v : vertices(mesh))
+      EXPECT_EQ(H.first[v], rows[std::size_t(v)].values[2]);
+  }
+  // With an isolated vertex, read back as a soup: same vertex count as the file.
+  m.points.push_back({9, 9, 9});
+  const fs::path q = file("isolated.off", off(m));
+  const fs::path output = dir / "isolated.ply";
+  ASSERT_EQ(run({"-o", output.string(), q.string()}).exit_code, 0);
+  std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> points;
+  std::vector<std::vector<std::size_t>> faces;
+  ASSERT_TRUE(CGAL::IO::read_PLY(output.string(), points, faces));
+  EXPECT_EQ(points.size(), m.points.size());
+  EXPECT_EQ(faces.size(), m.faces.size());
+  // As a mesh: the isolated vertex's values are NaN, its status 2 (failed).
+  CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> mesh;
+  std::ifstream in(output, std::ios::binary);
+  ASSERT_TRUE(CGAL::IO::read_PLY(in, mesh));
+  ASSERT_EQ(num_vertices(mesh), m.points.size());
+  auto H = mesh.property_map<decltype(mesh)::Vertex_index, double>("v:mean");
+  ASSERT_TRUE(H.second);
+  const auto last = *std::prev(vertices(mesh).end());
+  EXPECT_TRUE(std::isnan(H.first[last]));
+  EXPECT_TRUE(std::isfinite(H.first[*vertices(mesh).begin()]));
+  auto status = mesh.property_map<decltype(mesh)::Vertex_index, unsigned char>("v:status");
+  ASSERT_TRUE(status.second);
+  EXPECT_EQ(int(status.first[last]), 2);
+}
+
+TEST_F(ToolTest, SummaryAndHelp)
+{
+  const fs::path p = file("sphere.off", off(icosphere(2, 1)));
+  const Result r = run({p.string()});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  for (const char* s : {"vertices: 162", "time:", "mean curvature H: min", "Gaussian curvature K: min",
+                        "widened: ", "failed"})
+    EXPECT_NE(r.out.find(s), std::string::npos) << s << " in\n" << r.out;
+  const Result h = run({"--help"});
+  EXPECT_EQ(h.exit_code, 0);
+  EXPECT_NE(h.out.find("usage: curvature"), std::string::npos);
+  const Result obj_run = run({file("sphere.obj", obj(icosphere(1, 1))).string()});
+  EXPECT_EQ(obj_run.exit_code, 0) << obj_run.err;
+}
+
+TEST_F(ToolTest, RepairIsReportedOnStderr)
+{
+  Indexed m = icosphere(1, 1);
+  std::swap(m.faces[0][0], m.faces[0][1]);
+  const fs::path p = file("flipped.off", off(m));
+  const Result r = run({"-o", (dir / "out.csv").string(), p.string()});
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.err.find("repaired"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("re-oriented"), std::string::npos) << r.err;
+}
+
+} // namespace
