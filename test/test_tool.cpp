@@ -413,6 +413,15 @@ TEST_F(ToolTest, TruncatedFiles)
                           "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n"
                           "0 0 0\n1 0 0\n0 1 0\n";
   expect_rejected({file("truncated.ply", ply).string()}, "truncated PLY");
+  // Found by the fuzz target: a property before any element crashes CGAL 5.5's PLY reader.
+  const std::string no_element = "ply\nformat ascii 1.0\nelemnt vertex 4\nproperty float x\nproperty float y\n"
+                                 "property float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  expect_rejected({file("property_before_element.ply", no_element).string()}, "PLY property before any element");
+  // Also found by the fuzz target: CGAL 5.5 reads x, y, z as float or double whatever their declared type.
+  const std::string uchar_x = "ply\nformat ascii 1.0\nelement vertex 3\nproperty uchar x\nproperty float y\n"
+                              "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                              "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  expect_rejected({file("uchar_coordinate.ply", uchar_x).string()}, "PLY coordinate of integer type");
 }
 
 TEST_F(ToolTest, IndicesOutOfRange)

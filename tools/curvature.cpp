@@ -211,11 +211,16 @@ struct Silence_cerr
   ~Silence_cerr() { std::cerr.rdbuf(saved); }
 };
 
-// CGAL's OFF and PLY readers size their arrays from the header's counts: a
-// header declaring billions of elements in a small file would exhaust memory
-// before the reader notices the file is short. Every vertex takes at least 6
-// bytes ("0 0 0\n", or 12 in binary), every face at least 2.
-void check_declared_counts(const std::string& path, const std::string& ext)
+// Headers that CGAL 5.5's OFF and PLY readers do not survive, refused first:
+// - the readers size their arrays from the header's counts: a header declaring
+//   billions of elements in a small file would exhaust memory before the reader
+//   notices the file is short. Every vertex takes at least 6 bytes ("0 0 0\n",
+//   or 12 in binary), every face at least 2;
+// - the PLY reader adds a `property` to the last element without checking that
+//   there is one: a property before any `element` line crashes it; and it reads
+//   a vertex's x, y, z as float or double without checking their declared type:
+//   `property uchar x` crashes it (both found by the fuzz target).
+void check_header(const std::string& path, const std::string& ext)
 {
   if (ext != ".off" && ext != ".ply")
     return;
@@ -238,13 +243,31 @@ void check_declared_counts(const std::string& path, const std::string& ext)
       faces = f;
     }
   } else {
-    std::string line;
+    std::string line, element;
+    bool element_seen = false;
     for (int lines = 0; lines < 1000 && std::getline(in, line) && line.rfind("end_header", 0) != 0; ++lines) {
       std::istringstream words(line);
-      std::string element, name;
+      std::string keyword, name;
       long double n = 0;
-      if (words >> element >> name >> n && element == "element")
-        (name == "vertex" ? vertices : faces) += n;
+      words >> keyword;
+      if (keyword == "property") {
+        if (!element_seen)
+          fail("malformed file '" + path + "': a PLY property before any element");
+        std::string type;
+        words >> type >> name;
+        const bool coordinate = name == "x" || name == "y" || name == "z";
+        const bool floating = type == "float" || type == "double" || type == "float32" || type == "float64";
+        if ((element == "vertex" || element == "vertices") && coordinate && !floating)
+          fail("unsupported file '" + path + "': PLY vertex coordinate '" + name + "' of type '" + type +
+               "' (float or double expected)");
+      }
+      if (keyword == "element") {
+        element_seen = true;
+        if (words >> name >> n) {
+          element = name;
+          (name == "vertex" ? vertices : faces) += n;
+        }
+      }
     }
   }
   if (vertices < 0 || faces < 0 || 6 * vertices + 2 * faces > static_cast<long double>(bytes) + 64)
@@ -271,7 +294,7 @@ Soup read_input(const std::string& path)
       fail("cannot read '" + path + "': cannot open the file");
   }
 
-  check_declared_counts(path, ext);
+  check_header(path, ext);
 
   Soup soup;
   bool ok = false;
