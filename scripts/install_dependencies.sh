@@ -2,6 +2,8 @@
 # Install the Debian 12 packages needed to build, test and document the
 # CGAL curvature estimation package. Idempotent: exits at once when every
 # package is already installed.
+#   --report  also the packages that regenerate benchmark/REPORT.md
+#             (matplotlib draws the plots and renders the bunny pictures)
 set -euo pipefail
 
 PACKAGES=(
@@ -18,7 +20,13 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   # User manual (CGAL-style Doxygen documentation in doc/).
   doxygen
+  # The fuzz target of the tool's input path (libFuzzer ships with Debian's clang).
+  clang
 )
+if [ "${1:-}" = "--report" ]; then
+  # Plots and headless renders of benchmark/REPORT.md (/usr/bin/python3's matplotlib, Agg backend).
+  PACKAGES+=(python3 python3-matplotlib python3-numpy)
+fi
 
 is_installed() {
   dpkg -s "$1" 2>/dev/null | grep -q '^Status: install ok installed$'
