@@ -310,6 +310,30 @@ inline Exact_curvature torus_curvature_at(double R, double r, const Eigen::Vecto
   return torus_curvature(R, r, u, v);
 }
 
+/// Exact curvature of the implicit surface F = 0 at a point where grad F = `gradient` (non-zero)
+/// and the Hessian of F is `hessian`; the normal is gradient/|gradient| and the shape operator is
+/// the Hessian restricted to the tangent plane, divided by |gradient|. With this sign the sphere
+/// F = |x|^2 - r^2 (outward gradient) has k = +1/r, and the graph F = z - f(x,y) (upward
+/// gradient) agrees with `graph_curvature`: the library's convention.
+inline Exact_curvature implicit_curvature(const Eigen::Vector3d& gradient, const Eigen::Matrix3d& hessian)
+{
+  const double len = gradient.norm();
+  const Eigen::Vector3d n = gradient / len;
+  const Eigen::Vector3d e1 = internal::any_orthogonal(n);
+  const Eigen::Vector3d e2 = n.cross(e1).normalized();
+  const Eigen::Vector3d h1 = hessian * e1, h2 = hessian * e2;
+  return internal::from_shape_matrix(n, e1, e2, e1.dot(h1) / len, 0.5 * (e1.dot(h2) + e2.dot(h1)) / len,
+                                     e2.dot(h2) / len);
+}
+
+/// Exact curvature of the ellipsoid x^2/a^2 + y^2/b^2 + z^2/c^2 = 1 at the point p on it
+/// (outward normal; a = b = c = r gives the sphere's 1/r).
+inline Exact_curvature ellipsoid_curvature(double a, double b, double c, const Eigen::Vector3d& p)
+{
+  const Eigen::Vector3d inv_sq(1.0 / (a * a), 1.0 / (b * b), 1.0 / (c * c));
+  return implicit_curvature(2.0 * p.cwiseProduct(inv_sq), Eigen::Matrix3d(2.0 * inv_sq.asDiagonal()));
+}
+
 // ===========================================================================
 // 3. Soups and meshes
 // ===========================================================================
@@ -568,6 +592,44 @@ inline Soup sphere_soup(double radius, unsigned subdivisions)
   return out;
 }
 
+/// Ellipsoid x^2/a^2 + y^2/b^2 + z^2/c^2 = 1: the unit icosphere of `sphere_soup(1, subdivisions)`
+/// scaled by (a, b, c), so oriented outward with 10*4^s + 2 points. With jitter > 0 (in [0, 0.25))
+/// every point of the unit icosphere is first moved in its tangent plane by independent uniform
+/// offsets in [-jitter*l, jitter*l) along two tangent directions, l its shortest incident edge,
+/// and projected back: an irregular mesh whose points lie exactly on the surface (a, b, c all
+/// equal give an irregular sphere). params = (azimuth, polar angle) of the unit-sphere point.
+/// Exact curvature: `ellipsoid_curvatures(a, b, c, soup)`. Deterministic given the seed.
+inline Soup ellipsoid_soup(double a, double b, double c, unsigned subdivisions, double jitter = 0.0,
+                           std::uint32_t seed = 1)
+{
+  if (!(a > 0.0 && b > 0.0 && c > 0.0)) throw std::invalid_argument("ce_test: ellipsoid_soup needs a, b, c > 0");
+  if (!(jitter >= 0.0 && jitter < 0.25)) throw std::invalid_argument("ce_test: ellipsoid jitter must be in [0, 0.25)");
+  Soup s = sphere_soup(1.0, subdivisions);
+  if (jitter > 0.0) {
+    std::vector<double> shortest(s.points.size(), std::numeric_limits<double>::infinity());
+    for (const auto& f : s.faces)
+      for (int k = 0; k < 3; ++k) {
+        const std::size_t i = f[k], j = f[(k + 1) % 3];
+        const double len = (s.points[i] - s.points[j]).norm();
+        shortest[i] = std::min(shortest[i], len);
+        shortest[j] = std::min(shortest[j], len);
+      }
+    std::mt19937 gen(seed);
+    for (std::size_t i = 0; i < s.points.size(); ++i) {
+      const Eigen::Vector3d& n = s.points[i];
+      const Eigen::Vector3d t1 = internal::any_orthogonal(n), t2 = n.cross(t1);
+      const double u = uniform_symmetric(gen), v = uniform_symmetric(gen);
+      s.points[i] = (n + jitter * shortest[i] * (u * t1 + v * t2)).normalized();
+    }
+  }
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    const Eigen::Vector3d& p = s.points[i];
+    s.params[i] = Eigen::Vector2d(std::atan2(p.y(), p.x()), std::acos(std::max(-1.0, std::min(1.0, p.z()))));
+    s.points[i] = Eigen::Vector3d(a * p.x(), b * p.y(), c * p.z());
+  }
+  return s;
+}
+
 /// Torus (R > r > 0, see `torus_point`) triangulated on the periodic n_u x n_v parameter grid
 /// u_i = 2 pi i/n_u, v_j = 2 pi j/n_v (n_u, n_v >= 3); point (i, j) has index i + n_u*j;
 /// quads split along the anti diagonal, faces oriented outward. With jitter > 0 (a fraction of
@@ -627,6 +689,15 @@ inline std::vector<Exact_curvature> sphere_curvatures(double radius, const Soup&
   std::vector<Exact_curvature> out;
   out.reserve(s.points.size());
   for (const auto& p : s.points) out.push_back(sphere_curvature(radius, p));
+  return out;
+}
+
+/// Exact curvatures of an ellipsoid soup (`ellipsoid_soup(a, b, c, ...)`) at each point.
+inline std::vector<Exact_curvature> ellipsoid_curvatures(double a, double b, double c, const Soup& s)
+{
+  std::vector<Exact_curvature> out;
+  out.reserve(s.points.size());
+  for (const auto& p : s.points) out.push_back(ellipsoid_curvature(a, b, c, p));
   return out;
 }
 
