@@ -3,7 +3,8 @@
 # ce_extract_data([ARCHIVE <path>] [DESTINATION <dir>])
 #
 # Extracts data/meshes/bunny00.off (required) and, when the archive holds them,
-# data/meshes/elephant.off and data/meshes/armadillo.off into <dir>/data/
+# data/meshes/elephant.off, data/meshes/armadillo.off and
+# data/meshes/ChineseDragon-10kv.off into <dir>/data/
 # (default <dir> = PROJECT_BINARY_DIR, i.e. CMAKE_BINARY_DIR for a top-level
 # build) at configure time. Files already extracted are not extracted again.
 #
@@ -29,7 +30,8 @@ function(ce_extract_data)
 
   set(data_dir "${ARG_DESTINATION}/data")
   set(required  data/meshes/bunny00.off)
-  set(optional  data/meshes/elephant.off data/meshes/armadillo.off)
+  # ChineseDragon-10kv.off: a fourth real mesh for the speed benchmarks.
+  set(optional  data/meshes/elephant.off data/meshes/armadillo.off data/meshes/ChineseDragon-10kv.off)
 
   # Which of the wanted files are still missing?
   set(missing "")
