@@ -1,0 +1,250 @@
+// Accuracy of every estimator of benchmark/estimators.h against exact curvature,
+// written as CSV for benchmark/make_report.py.
+//
+//   ./build/benchmark/accuracy_runner [--quick] [--out DIR]     (DIR defaults to .)
+//
+// Surfaces: five of Hamann's graph functions on [-1,1]^2, a sphere, a torus and an
+// ellipsoid, each as a regular mesh (grid, icosphere, parameter grid) and as an
+// irregular one (jittered parameter domain, points moved up to 0.2 of the local
+// spacing), the graphs also on Delaunay triangulations of random points; each on a
+// refinement series of 4 sizes (2 with --quick), so that the report can fit observed orders.
+//
+// DIR/accuracy.csv, one row per surface x mesh x size x estimator x region x quantity:
+//   surface,mesh,level,vertices,h,estimator,region,quantity,rms,max,count,not_estimable
+// h is the mean edge length; region is `all` or `interior` (graphs: the vertices with
+// |x|, |y| <= 0.8, away from the one-sided stencils of the boundary, a fixed part of
+// the domain as h -> 0; closed surfaces: all vertices); quantity is k_max, k_min, H or
+// K; rms and max are over the `count` vertices of the region that have an estimate;
+// `not_estimable` counts the region's vertices without one (left out of the errors).
+// The estimator `paraboloid_given_normals` is given the EXACT normals here: it shows
+// what the fit does when the normals are not the limiting factor.
+//
+// DIR/bunny_mean_curvature.csv (x,y,z and one column of H per estimator) and
+// DIR/bunny_faces.csv (three vertex indices per row) for the report's pictures.
+#include "estimators.h"
+
+#include "estimator_runs.h"
+#include "test_surfaces.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace ce_bench;
+// Results do not depend on the tag (the estimators guarantee it); parallel is just faster.
+using Tag = CGAL::Parallel_if_available_tag;
+
+struct Case
+{
+  std::string surface, mesh; // mesh: regular, jittered or delaunay
+  int level;                 // 0 = coarsest of the series
+  ce_test::Soup soup;
+  std::vector<ce_test::Exact_curvature> exact;
+  std::vector<bool> interior;
+};
+
+// A refinement series: makes the case of level `level` (0 .. levels-1).
+struct Series
+{
+  std::string surface, mesh;
+  std::function<Case(int level)> make;
+};
+
+constexpr double jitter = 0.2;
+
+Case make_case(const std::string& surface, const std::string& mesh, int level, ce_test::Soup soup,
+               std::vector<ce_test::Exact_curvature> exact, std::function<bool(const Eigen::Vector2d&)> is_interior)
+{
+  Case c{surface, mesh, level, std::move(soup), std::move(exact), {}};
+  for (const Eigen::Vector2d& p : c.soup.params)
+    c.interior.push_back(is_interior(p));
+  return c;
+}
+
+std::vector<Series> all_series()
+{
+  std::vector<Series> series;
+  const auto everywhere = [](const Eigen::Vector2d&) { return true; };
+  const auto inside_graph = [](const Eigen::Vector2d& p) { return std::abs(p.x()) <= 0.8 && std::abs(p.y()) <= 0.8; };
+
+  // Hamann's Table 4.1 numbers (1-based): sphere cap, hyperboloid, monkey saddle, exponential, trigonometric.
+  const std::vector<ce_test::Graph_function> functions = ce_test::hamann_table1_functions();
+  for (int index : {3, 5, 6, 8, 9}) {
+    const ce_test::Graph_function g = functions[static_cast<std::size_t>(index - 1)];
+    const std::string name = "graph_" + g.name;
+    // n = 17, 33, 65, 129 grid points per side: h halves at each level.
+    const auto n_of = [](int level) { return static_cast<std::size_t>(16 << level) + 1; };
+    series.push_back({name, "regular", [=](int l) {
+                        ce_test::Soup s = ce_test::grid_graph_soup(g, n_of(l));
+                        auto exact = ce_test::graph_curvatures(g, s);
+                        return make_case(name, "regular", l, std::move(s), std::move(exact), inside_graph);
+                      }});
+    series.push_back({name, "jittered", [=](int l) {
+                        ce_test::Soup s = ce_test::jittered_grid_graph_soup(g, n_of(l), -1.0, 1.0, jitter, 7);
+                        auto exact = ce_test::graph_curvatures(g, s);
+                        return make_case(name, "jittered", l, std::move(s), std::move(exact), inside_graph);
+                      }});
+    series.push_back({name, "delaunay", [=](int l) {
+                        const std::size_t n = n_of(l);
+                        ce_test::Soup s = ce_test::delaunay_graph_soup(g, n * n, -1.0, 1.0, 7);
+                        auto exact = ce_test::graph_curvatures(g, s);
+                        return make_case(name, "delaunay", l, std::move(s), std::move(exact), inside_graph);
+                      }});
+  }
+
+  // Closed surfaces have no boundary: every vertex is interior.
+  // Sphere and ellipsoid: icosphere subdivisions 2..5 (162 .. 10242 vertices).
+  const double a = 1.5, b = 1.0, c = 0.6;
+  for (const bool irregular : {false, true}) {
+    const std::string mesh = irregular ? "jittered" : "regular";
+    const double j = irregular ? jitter : 0.0;
+    series.push_back({"sphere", mesh, [=](int l) {
+                        ce_test::Soup s = ce_test::ellipsoid_soup(1.0, 1.0, 1.0, unsigned(l + 2), j, 7);
+                        auto exact = ce_test::sphere_curvatures(1.0, s);
+                        return make_case("sphere", mesh, l, std::move(s), std::move(exact), everywhere);
+                      }});
+    series.push_back({"ellipsoid", mesh, [=](int l) {
+                        ce_test::Soup s = ce_test::ellipsoid_soup(a, b, c, unsigned(l + 2), j, 7);
+                        auto exact = ce_test::ellipsoid_curvatures(a, b, c, s);
+                        return make_case("ellipsoid", mesh, l, std::move(s), std::move(exact), everywhere);
+                      }});
+    // Torus R = 3, r = 1 on 2k x k parameter grids, k = 12, 24, 48, 96.
+    series.push_back({"torus", mesh, [=](int l) {
+                        const std::size_t k = std::size_t(12) << l;
+                        ce_test::Soup s = ce_test::torus_soup(3.0, 1.0, 2 * k, k, j, 7);
+                        auto exact = ce_test::torus_curvatures(3.0, 1.0, s);
+                        return make_case("torus", mesh, l, std::move(s), std::move(exact), everywhere);
+                      }});
+  }
+  return series;
+}
+
+void write_rows(std::ostream& out, const Case& c, double h, const char* estimator,
+                const ce_test::Estimates<Kernel>& e)
+{
+  for (const bool interior_only : {false, true}) {
+    std::size_t not_estimable = 0; // counted by `include`, which curvature_errors calls once per vertex
+    const auto include = [&](std::size_t i) {
+      if (interior_only && !c.interior[i])
+        return false;
+      if (e.status[i] == CE::Estimation_status::not_estimable) {
+        ++not_estimable;
+        return false;
+      }
+      return true;
+    };
+    const ce_test::Curvature_errors errors = ce_test::curvature_errors(e, c.exact, include);
+    const std::pair<const char*, const ce_test::Error_accumulator*> quantities[] = {
+      {"k_max", &errors.k_max}, {"k_min", &errors.k_min}, {"H", &errors.mean}, {"K", &errors.gaussian}};
+    for (const auto& [quantity, accumulator] : quantities) {
+      const ce_test::Error_stats s = accumulator->stats();
+      out << c.surface << ',' << c.mesh << ',' << c.level << ',' << c.soup.points.size() << ',' << h << ','
+          << estimator << ',' << (interior_only ? "interior" : "all") << ',' << quantity << ',' << s.rms << ','
+          << s.max << ',' << s.count << ',' << not_estimable << '\n';
+    }
+  }
+}
+
+void run_accuracy(bool quick, const std::string& path)
+{
+  std::ofstream out(path);
+  if (!out)
+    throw std::runtime_error("cannot write " + path);
+  out << std::setprecision(9);
+  out << "surface,mesh,level,vertices,h,estimator,region,quantity,rms,max,count,not_estimable\n";
+  const int levels = quick ? 2 : 4;
+  for (const Series& series : all_series())
+    for (int level = 0; level < levels; ++level) {
+      const auto start = std::chrono::steady_clock::now();
+      Case c = series.make(level);
+      Mesh mesh = ce_test::to_mesh<Mesh>(c.soup);
+      const double h = ce_test::mean_edge_length(c.soup);
+      Normal_map exact_normals = ce_test::exact_normal_map<Kernel>(mesh, c.exact);
+      for (const Estimator_info& info : estimators()) {
+        const ce_test::Estimates<Kernel> e = ce_test::run_with_all_outputs<Kernel>(
+          mesh, [&](const Mesh& m, const auto& np) { run<Tag>(info.id, m, exact_normals, np); },
+          CE::parameters::default_values());
+        write_rows(out, c, h, info.name, e);
+      }
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::fprintf(stderr, "accuracy: %-22s %-9s level %d: %7zu vertices, %6.2f s\n", c.surface.c_str(),
+                   c.mesh.c_str(), level, c.soup.points.size(), seconds);
+    }
+}
+
+// Mean curvature of every estimator on the bunny, for the report's pictures.
+void run_bunny(const std::string& dir)
+{
+  Mesh mesh = read_real_mesh("bunny00");
+  Normal_map normals = mesh.add_property_map<vertex_descriptor, Kernel::Vector_3>("v:given_normal").first;
+  CE::estimate_vertex_normals(mesh, normals); // no exact normals on a scanned mesh: the default estimate
+  std::vector<std::vector<double>> columns;
+  for (const Estimator_info& info : estimators())
+    columns.push_back(ce_test::run_with_all_outputs<Kernel>(
+                        mesh, [&](const Mesh& m, const auto& np) { run<Tag>(info.id, m, normals, np); },
+                        CE::parameters::default_values())
+                        .mean);
+
+  std::ofstream vertices_out(dir + "/bunny_mean_curvature.csv");
+  vertices_out << std::setprecision(9) << "x,y,z";
+  for (const Estimator_info& info : estimators())
+    vertices_out << ',' << info.name;
+  vertices_out << '\n';
+  std::size_t i = 0;
+  for (vertex_descriptor v : vertices(mesh)) {
+    const Kernel::Point_3& p = mesh.point(v);
+    vertices_out << p.x() << ',' << p.y() << ',' << p.z();
+    for (const std::vector<double>& column : columns)
+      vertices_out << ',' << column[i];
+    vertices_out << '\n';
+    ++i;
+  }
+  // A mesh read from a file has no removed elements: vertex indices are 0 .. n-1 in
+  // iteration order, the row numbers of bunny_mean_curvature.csv.
+  std::ofstream faces_out(dir + "/bunny_faces.csv");
+  faces_out << "a,b,c\n";
+  for (Mesh::Face_index f : faces(mesh)) {
+    const char* separator = "";
+    for (vertex_descriptor v : vertices_around_face(halfedge(f, mesh), mesh)) {
+      faces_out << separator << std::size_t(v);
+      separator = ",";
+    }
+    faces_out << '\n';
+  }
+  if (!vertices_out || !faces_out)
+    throw std::runtime_error("cannot write the bunny's CSV files in " + dir);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  bool quick = false;
+  std::string dir = ".";
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--quick") == 0)
+      quick = true;
+    else if (std::strcmp(argv[i], "--out") == 0 && i + 1 < argc)
+      dir = argv[++i];
+    else {
+      std::cerr << "usage: accuracy_runner [--quick] [--out DIR]\n";
+      return 2;
+    }
+  }
+  try {
+    run_accuracy(quick, dir + "/accuracy.csv");
+    run_bunny(dir);
+  } catch (const std::exception& e) {
+    std::cerr << "accuracy_runner: " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
+}

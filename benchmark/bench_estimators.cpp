@@ -1,0 +1,167 @@
+// Speed of every estimator of benchmark/estimators.h, in ns per vertex (the
+// `time_per_vertex` counter: seconds per vertex, e.g. 95n), on Surface_mesh:
+// grids of .1(cos pi x + cos pi y) with about 10k, 100k and 1M vertices and CGAL's
+// bunny, armadillo, elephant and Chinese dragon; sequential and parallel (TBB,
+// at most 2 threads). Benchmark names are ESTIMATOR/MESH/seq|par, which
+// benchmark/make_report.py parses.
+//
+//   ./build/benchmark/bench_estimators [--quick] [--benchmark_filter=...] [--benchmark_out=f.json ...]
+//
+// --quick: a smoke run on a 2.6k- and a 10k-vertex grid, the bunny and the elephant,
+// with short minimum times and no repetitions. Otherwise every case runs for at least
+// 1 s, or once if one run takes longer (jet fitting on 1M vertices: tens of seconds),
+// and most cases are repeated 3 times; the full run takes about 15 minutes on two cores.
+#include "estimators.h"
+
+#include "test_surfaces.h"
+
+#include <benchmark/benchmark.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
+#include <cstring>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace ce_bench;
+
+// The report's targets speak of two cores: parallel runs use at most 2 threads.
+constexpr int parallel_threads = 2;
+
+struct Input
+{
+  std::string name; // grid_<n> (n x n vertices) or a real mesh's name
+  int grid_n;       // 0 for a real mesh
+};
+
+// Inputs are built on first use and kept for the process: the 1M-vertex grid takes
+// seconds to build, longer than the fast estimators take to run on it.
+Mesh& mesh_of(const Input& input)
+{
+  static std::map<std::string, std::unique_ptr<Mesh>> cache;
+  std::unique_ptr<Mesh>& mesh = cache[input.name];
+  if (!mesh) {
+    if (input.grid_n > 0)
+      mesh = std::make_unique<Mesh>(ce_test::to_mesh<Mesh>(ce_test::grid_graph_soup(
+        ce_test::hamann_table1_functions()[8], static_cast<std::size_t>(input.grid_n))));
+    else
+      mesh = std::make_unique<Mesh>(read_real_mesh(input.name));
+  }
+  return *mesh;
+}
+
+template <typename ConcurrencyTag>
+void time_estimator(benchmark::State& state, Estimator estimator, const Input& input)
+{
+  Mesh* mesh = nullptr;
+  try {
+    mesh = &mesh_of(input);
+  } catch (const std::exception& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
+  auto mean = mesh->add_property_map<vertex_descriptor, double>("v:bench_H").first;
+  auto gaussian = mesh->add_property_map<vertex_descriptor, double>("v:bench_K").first;
+  auto principal =
+    mesh->add_property_map<vertex_descriptor, CE::Principal_curvatures_and_directions<Kernel>>("v:bench_pcd").first;
+  Normal_map given = mesh->add_property_map<vertex_descriptor, Kernel::Vector_3>("v:bench_normal").first;
+  if (estimator == Estimator::paraboloid_given_normals)
+    CE::estimate_vertex_normals(*mesh, given); // not timed: "given" means someone else computed them
+
+  const auto outputs = CE::parameters::vertex_mean_curvature_map(mean)
+                         .vertex_Gaussian_curvature_map(gaussian)
+                         .vertex_principal_curvatures_and_directions_map(principal);
+  for (auto _ : state) {
+    run<ConcurrencyTag>(estimator, *mesh, given, outputs);
+    benchmark::DoNotOptimize(mean[*vertices(*mesh).begin()]);
+    benchmark::ClobberMemory();
+  }
+  const double n = static_cast<double>(num_vertices(*mesh));
+  state.counters["vertices"] = n;
+  state.counters["threads"] = std::is_same<ConcurrencyTag, CGAL::Sequential_tag>::value ? 1 : parallel_threads;
+  // Seconds per vertex, printed with an SI prefix (e.g. 95n = 95 ns).
+  state.counters["time_per_vertex"] =
+    benchmark::Counter(n, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  mesh->remove_property_map(mean);
+  mesh->remove_property_map(gaussian);
+  mesh->remove_property_map(principal);
+  mesh->remove_property_map(given);
+}
+
+void register_all(bool quick)
+{
+  std::vector<Input> inputs;
+  for (int n : quick ? std::vector<int>{51, 101} : std::vector<int>{101, 317, 1001})
+    inputs.push_back({"grid_" + std::to_string(n), n});
+  if (quick) {
+    inputs.push_back({"bunny00", 0});
+    inputs.push_back({"elephant", 0});
+  } else {
+    for (const char* name : real_mesh_names())
+      inputs.push_back({name, 0});
+  }
+  const double min_time = quick ? 0.05 : 1.0;
+  // The machine is shared: make_report.py takes the best of the repetitions, the least
+  // disturbed run. Jet fitting with 1 ring and with d = 4 runs once (it takes minutes on
+  // the 1M grid); the 2-ring jet is repeated like the paraboloid fit, as the report
+  // divides one by the other.
+  const auto repetitions = [quick](Estimator e) {
+    return quick || e == Estimator::jet_d2_1ring || e == Estimator::jet_d4_3rings ? 1 : 3;
+  };
+
+  for (const Input& input : inputs)
+    for (const Estimator_info& e : estimators()) {
+      const std::string base = std::string(e.name) + "/" + input.name;
+      benchmark::RegisterBenchmark((base + "/seq").c_str(),
+                                   [e, input](benchmark::State& s) { time_estimator<CGAL::Sequential_tag>(s, e.id, input); })
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime()
+        ->MinTime(min_time)
+        ->Repetitions(repetitions(e.id))
+        ->DisplayAggregatesOnly(true); // the JSON file still has every repetition
+#ifdef CGAL_LINKED_WITH_TBB
+      benchmark::RegisterBenchmark((base + "/par").c_str(),
+                                   [e, input](benchmark::State& s) { time_estimator<CGAL::Parallel_tag>(s, e.id, input); })
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime() // wall clock: CPU time of the main thread says nothing of a parallel run
+        ->MinTime(min_time)
+        ->Repetitions(repetitions(e.id))
+        ->DisplayAggregatesOnly(true);
+#endif
+    }
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  // Our own flag first: Google Benchmark rejects flags it does not know.
+  bool quick = false;
+  int kept = 1;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--quick") == 0)
+      quick = true;
+    else
+      argv[kept++] = argv[i];
+  }
+  argc = kept;
+
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, parallel_threads);
+#endif
+  register_all(quick);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv))
+    return 1;
+  benchmark::AddCustomContext("quick", quick ? "yes" : "no");
+  benchmark::AddCustomContext("parallel_threads", std::to_string(parallel_threads));
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
