@@ -1,0 +1,532 @@
+#!/usr/bin/python3
+"""Writes benchmark/REPORT.md and benchmark/figures/*.png from the outputs of
+bench_estimators (Google Benchmark JSON) and accuracy_runner (CSV).
+
+Run by scripts/make_report.sh; by hand:
+
+  /usr/bin/python3 benchmark/make_report.py --bench-json speed.json \
+      --accuracy-dir DIR --build-dir build [--quick]
+
+Needs matplotlib and numpy (Debian: python3-matplotlib python3-numpy, installed by
+scripts/install_dependencies.sh --report). Every number in the report comes from
+the two input files and the machine; nothing is typed in here except the issue's
+targets.
+"""
+import argparse
+import csv
+import datetime
+import json
+import math
+import os
+import platform
+import re
+import subprocess
+from collections import defaultdict
+
+import matplotlib
+
+matplotlib.use("Agg")  # headless: no display on CI machines
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+# Estimators in report order, with labels; must match benchmark/estimators.h.
+ESTIMATORS = [
+    ("paraboloid", "paraboloid (default normals)"),
+    ("paraboloid_area_normals", "paraboloid (area normals)"),
+    ("paraboloid_given_normals", "paraboloid (given normals)"),
+    ("curve_network_1", "curve network O(h^2)"),
+    ("curve_network_2", "curve network O(h^4)"),
+    ("gauss_map", "Gauss map"),
+    ("taubin", "Taubin"),
+    ("chen_schmitt", "Chen-Schmitt"),
+    ("jet_d2_1ring", "jet d=2, 1 ring"),
+    ("jet_d2_2rings", "jet d=2, 2 rings"),
+    ("jet_d4_3rings", "jet d=4, 3 rings"),
+]
+LABEL = dict(ESTIMATORS)
+
+
+def style(i):
+    """Line style of the i-th estimator, the same in every plot: tab10 has 10 colours for 11
+    estimators, so the jets are also dashed and every line has its own marker."""
+    return {"color": "k" if i == 10 else plt.get_cmap("tab10")(i), "marker": "os^vD<>pPX*"[i],
+            "ls": "--" if ESTIMATORS[i][0].startswith("jet") else "-"}
+QUANTITIES = ["k_max", "k_min", "H", "K"]
+
+# The targets of the project's issue 5.
+TARGET_NS = 60.0
+TARGET_JET_RATIO = 150.0
+TARGET_SCALING = 0.25
+TARGET_SPEEDUP = 1.8
+
+# Below this RMS an error is rounding, and its "order" means nothing.
+ROUNDING = 1e-12
+
+
+# ---------------------------------------------------------------------------
+# Inputs
+# ---------------------------------------------------------------------------
+
+def run(cmd):
+    try:
+        return subprocess.run(cmd, capture_output=True, text=True, check=False).stdout
+    except OSError:
+        return ""
+
+
+def machine(build_dir, bench_context):
+    lscpu = run(["lscpu"])
+    cpu = re.search(r"^Model name:\s*(.+)$", lscpu, re.M)
+    cache = {}
+    cache_path = os.path.join(build_dir, "CMakeCache.txt")
+    if os.path.exists(cache_path):
+        for line in open(cache_path):
+            m = re.match(r"^(CMAKE_CXX_COMPILER|CMAKE_BUILD_TYPE|CMAKE_CXX_FLAGS_RELEASE):[A-Z]+=(.*)$", line)
+            if m:
+                cache[m.group(1)] = m.group(2)
+    compiler = run([cache.get("CMAKE_CXX_COMPILER", "c++"), "--version"]).splitlines()
+    cgal = run(["grep", "-m1", "define CGAL_VERSION ", "/usr/include/CGAL/version.h"]).split()
+    return {
+        "Date": datetime.datetime.now().strftime("%Y-%m-%d %H:%M %Z").strip(),
+        "CPU": cpu.group(1).strip() if cpu else platform.processor() or "unknown",
+        "Cores (nproc)": str(os.cpu_count()),
+        "Load average when the benchmarks started": ", ".join(
+            "%.2f" % x for x in bench_context.get("load_avg", [])) or "unknown",
+        "Compiler": compiler[0] if compiler else "unknown",
+        "Build type": "%s (%s)" % (cache.get("CMAKE_BUILD_TYPE", "?"), cache.get("CMAKE_CXX_FLAGS_RELEASE", "")),
+        "CGAL": cgal[-1] if cgal else "unknown",
+        "Google Benchmark library build": bench_context.get("library_build_type", "unknown"),
+        "OS": platform.platform(),
+    }
+
+
+def read_speed(path):
+    """{(estimator, mesh, seq|par): (ns per vertex, vertices)} and the JSON context.
+    Of repeated runs the fastest counts: on a shared machine it is the least disturbed."""
+    data = json.load(open(path))
+    speed = {}
+    for b in data.get("benchmarks", []):
+        if b.get("run_type", "iteration") != "iteration" or b.get("error_occurred"):
+            continue
+        key = tuple(b["name"].split("/")[:3])  # ESTIMATOR/MESH/seq|par/min_time:...
+        ns = b["time_per_vertex"] * 1e9
+        if key not in speed or ns < speed[key][0]:
+            speed[key] = (ns, int(b["vertices"]))
+    return speed, data.get("context", {})
+
+
+def read_accuracy(path):
+    rows = []
+    with open(path) as f:
+        for r in csv.DictReader(f):
+            for k in ("level", "vertices", "count", "not_estimable"):
+                r[k] = int(r[k])
+            for k in ("h", "rms", "max"):
+                r[k] = float(r[k])
+            rows.append(r)
+    return rows
+
+
+# ---------------------------------------------------------------------------
+# Formatting
+# ---------------------------------------------------------------------------
+
+def fmt_ns(x):
+    if x is None:
+        return "—"
+    return "%.0f" % x if x >= 100 else "%.1f" % x
+
+
+def fmt_e(x):
+    return "—" if x is None or not math.isfinite(x) else "%.1e" % x
+
+
+def fmt_order(x):
+    return "—" if x is None or not math.isfinite(x) else "%.2f" % x
+
+
+def table(header, rows):
+    out = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    out += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
+    return "\n".join(out)
+
+
+def mesh_order(meshes):
+    """Grids by size, then real meshes in the benchmark's order."""
+    grids = sorted((m for m in meshes if m.startswith("grid_")), key=lambda m: int(m[5:]))
+    return grids + [m for m in meshes if not m.startswith("grid_")]
+
+
+# ---------------------------------------------------------------------------
+# Speed
+# ---------------------------------------------------------------------------
+
+def speed_section(speed, figures, quick):
+    meshes = mesh_order(list(dict.fromkeys(m for (_, m, _) in speed)))
+    vertices = {m: v for (_, m, _), (_, v) in speed.items()}
+    lines = ["## Speed", ""]
+    lines.append("Nanoseconds per vertex (wall clock, `time_per_vertex` of `bench_estimators`), on "
+                 "`CGAL::Surface_mesh` with all of H, K and principal curvatures and directions requested. "
+                 "Grids: `grid_n` is the n x n grid of .1(cos pi x + cos pi y). `seq` is `CGAL::Sequential_tag`, "
+                 "`par` is `CGAL::Parallel_tag` with at most 2 TBB threads; speed-up = seq / par. "
+                 "The \"given normals\" variant gets precomputed normals (not timed). Best of 3 repetitions "
+                 "(jet d=2 1 ring and jet d=4: one; quick runs: one), each of at least 1 s or one call.")
+    lines.append("")
+    header = ["estimator"] + ["%s (%s v)" % (m, "{:,}".format(vertices[m])) for m in meshes]
+    for mode, title in (("seq", "sequential"), ("par", "parallel, 2 threads")):
+        lines += ["### ns per vertex, %s" % title, ""]
+        rows = [[LABEL.get(e, e)] + [fmt_ns(speed.get((e, m, mode), (None,))[0]) for m in meshes]
+                for e, _ in ESTIMATORS]
+        lines += [table(header, rows), ""]
+    lines += ["### Parallel speed-up (seq / par)", ""]
+    rows = []
+    for e, _ in ESTIMATORS:
+        row = [LABEL[e]]
+        for m in meshes:
+            s, p = speed.get((e, m, "seq")), speed.get((e, m, "par"))
+            row.append("%.2f" % (s[0] / p[0]) if s and p else "—")
+        rows.append(row)
+    lines += [table(header, rows), ""]
+    lines += ["### Jet fitting (d=2, 2 rings) / paraboloid (default normals), same run", ""]
+    rows = []
+    for mode in ("seq", "par"):
+        row = [mode]
+        for m in meshes:
+            j, p = speed.get(("jet_d2_2rings", m, mode)), speed.get(("paraboloid", m, mode))
+            row.append("%.1f" % (j[0] / p[0]) if j and p else "—")
+        rows.append(row)
+    lines += [table(["mode"] + meshes, rows), ""]
+
+    # Figures: ns/vertex against grid size (scaling), and bars on the real meshes.
+    grids = [m for m in meshes if m.startswith("grid_")]
+    real = [m for m in meshes if not m.startswith("grid_")]
+    fig, axes = plt.subplots(1, 2, figsize=(14, 5.5))
+    for ax, mode in zip(axes, ("seq", "par")):
+        for i, (e, label) in enumerate(ESTIMATORS):
+            pts = [(vertices[m], speed[(e, m, mode)][0]) for m in grids if (e, m, mode) in speed]
+            if pts:
+                ax.plot(*zip(*pts), label=label, **style(i))
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("vertices (grid)")
+        ax.set_ylabel("ns per vertex")
+        ax.set_title("time per vertex, %s" % ("sequential" if mode == "seq" else "parallel (2 threads)"))
+        ax.axhline(TARGET_NS, color="k", ls=":", lw=1)
+        ax.grid(True, which="both", alpha=0.3)
+    axes[0].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(figures, "speed_scaling.png"), dpi=110)
+    plt.close(fig)
+
+    if real:
+        fig, ax = plt.subplots(figsize=(14, 5.5))
+        width = 0.8 / len(real)
+        x = np.arange(len(ESTIMATORS))
+        for i, m in enumerate(real):
+            ys = [speed.get((e, m, "seq"), (np.nan,))[0] for e, _ in ESTIMATORS]
+            ax.bar(x + i * width, ys, width, label="%s (%s v)" % (m, "{:,}".format(vertices[m])))
+        ax.set_xticks(x + 0.4 - width / 2)
+        ax.set_xticklabels([label for _, label in ESTIMATORS], rotation=30, ha="right", fontsize=8)
+        ax.set_yscale("log")
+        ax.set_ylabel("ns per vertex (sequential)")
+        ax.set_title("time per vertex on real meshes, sequential")
+        ax.grid(True, axis="y", which="both", alpha=0.3)
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(os.path.join(figures, "speed_real_meshes.png"), dpi=110)
+        plt.close(fig)
+
+    lines += ["![time per vertex on grids](figures/speed_scaling.png)", ""]
+    lines += ["Time per vertex against grid size (log-log); the dotted line is the %g ns target. "
+              "A flat line means linear total time." % TARGET_NS, ""]
+    if real:
+        lines += ["![time per vertex on real meshes](figures/speed_real_meshes.png)", ""]
+    return lines
+
+
+def targets_section(speed, quick):
+    grids = mesh_order([m for (e, m, _) in speed if e == "paraboloid" and m.startswith("grid_")])
+    lines = ["## Targets of issue 5", ""]
+    if not grids:
+        return lines + ["No paraboloid timings: targets not evaluated.", ""]
+    small, large = grids[0], grids[-1]
+    if quick:
+        lines += ["**Quick run**: evaluated on %s instead of the 1M-vertex grid; not the targets' setting." % large, ""]
+
+    def ns(e, m, mode):
+        v = speed.get((e, m, mode))
+        return v[0] if v else None
+
+    rows = []
+    p_seq = ns("paraboloid", large, "seq")
+    rows.append(["paraboloid (default) single thread on %s" % large, "≤ %g ns/vertex" % TARGET_NS,
+                 fmt_ns(p_seq) + " ns", met(p_seq is not None and p_seq <= TARGET_NS)])
+    jet = ns("jet_d2_2rings", large, "seq")
+    ratio = jet / p_seq if jet and p_seq else None
+    rows.append(["jet d=2 2 rings / paraboloid, same run, %s seq" % large, "≥ %g×" % TARGET_JET_RATIO,
+                 "%.1f×" % ratio if ratio else "—", met(ratio is not None and ratio >= TARGET_JET_RATIO)])
+    p_small = ns("paraboloid", small, "seq")
+    change = p_seq / p_small - 1 if p_seq and p_small else None
+    rows.append(["ns/vertex %s → %s (paraboloid seq)" % (small, large), "within ±%d%%" % (100 * TARGET_SCALING),
+                 "%s → %s ns (%+.0f%%)" % (fmt_ns(p_small), fmt_ns(p_seq), 100 * change) if change is not None else "—",
+                 met(change is not None and abs(change) <= TARGET_SCALING)])
+    p_par = ns("paraboloid", large, "par")
+    speedup = p_seq / p_par if p_seq and p_par else None
+    rows.append(["parallel speed-up, 2 threads, %s (paraboloid)" % large, "≥ %g×" % TARGET_SPEEDUP,
+                 "%.2f×" % speedup if speedup else "—", met(speedup is not None and speedup >= TARGET_SPEEDUP)])
+    lines += [table(["target", "goal", "measured", "status"], rows), ""]
+    lines += ["The machine is shared with other developers' compiles while the benchmarks run (see the load "
+              "average above): wall-clock times, and parallel speed-ups above all, are pessimistic.", ""]
+    return lines
+
+
+def met(ok):
+    return "**met**" if ok else "**not met**"
+
+
+# ---------------------------------------------------------------------------
+# Accuracy
+# ---------------------------------------------------------------------------
+
+def accuracy_series(rows):
+    """{(surface, mesh, estimator, region, quantity): [rows by level]}"""
+    series = defaultdict(list)
+    for r in rows:
+        series[(r["surface"], r["mesh"], r["estimator"], r["region"], r["quantity"])].append(r)
+    for v in series.values():
+        v.sort(key=lambda r: r["level"])
+    return series
+
+
+def order_of(levels):
+    """Observed order between the two finest sizes: log(e_coarse/e_fine)/log(h_coarse/h_fine)."""
+    if len(levels) < 2:
+        return None
+    a, b = levels[-2], levels[-1]
+    if not (a["count"] and b["count"]) or not (a["rms"] > ROUNDING and b["rms"] > ROUNDING):
+        return None
+    return math.log(a["rms"] / b["rms"]) / math.log(a["h"] / b["h"])
+
+
+def surfaces_and_meshes(rows):
+    surfaces = list(dict.fromkeys(r["surface"] for r in rows))
+    meshes = list(dict.fromkeys(r["mesh"] for r in rows))
+    return surfaces, meshes
+
+
+def short(surface):
+    """Column label: graph_sphere (Hamann's sphere cap) must not read as the closed sphere."""
+    return surface.replace("graph_", "f:")
+
+
+def headline_region(surface):
+    # Graphs have a boundary: the interior shows the convergence of the method itself.
+    return "interior" if surface.startswith("graph_") else "all"
+
+
+def accuracy_section(rows, figures):
+    series = accuracy_series(rows)
+    surfaces, meshes = surfaces_and_meshes(rows)
+    lines = ["## Accuracy", ""]
+    lines.append("`accuracy_runner` compares every estimator with the exact curvature of: five of Hamann's "
+                 "graph functions on [-1,1]^2 (`graph_*`), a sphere (r = 1), an ellipsoid (1.5, 1, 0.6) and a torus "
+                 "(R = 3, r = 1). Each as a `regular` mesh (grid, icosphere, parameter grid), a `jittered` one "
+                 "(parameter domain perturbed by up to 0.2 of the local spacing, points on the surface) and, for "
+                 "the graphs, a `delaunay` one (Delaunay triangulation of random points). Each on a refinement "
+                 "series; h is the mean edge length. **Order** = log(e_coarse/e_fine)/log(h_coarse/h_fine) between "
+                 "the two finest meshes, from the RMS error. `interior`: graph vertices with |x|, |y| ≤ 0.8 "
+                 "(closed surfaces: all vertices). In this section the \"given normals\" variant of the paraboloid "
+                 "fit is given the **exact** normals. Vertices an estimator cannot estimate are left out of its "
+                 "errors and counted in the detailed tables.")
+    lines.append("")
+
+    # Summary: order of H and K per estimator, regular vs irregular, per surface.
+    for quantity in ("H", "K"):
+        lines += ["### Observed order of %s (RMS; interior for graphs, all vertices for closed surfaces)" % quantity, ""]
+        header = ["estimator"]
+        cols = []
+        for s in surfaces:
+            for m in meshes:
+                if any(k[0] == s and k[1] == m for k in series):
+                    cols.append((s, m))
+                    header.append("%s %s" % (short(s), m[:3]))
+        out = []
+        for e, label in ESTIMATORS:
+            out.append([label] + [fmt_order(order_of(series.get((s, m, e, headline_region(s), quantity), [])))
+                                  for s, m in cols])
+        lines += [table(header, out), ""]
+        lines += ["(`f:` Hamann's graph functions; `reg` regular, `jit` jittered, `del` Delaunay.)", ""]
+
+    # Summary: finest-mesh RMS of H.
+    lines += ["### RMS error of H on the finest mesh of each series", ""]
+    header = ["estimator"] + ["%s %s" % (short(s), m[:3]) for s, m in cols]
+    out = []
+    for e, label in ESTIMATORS:
+        out.append([label] + [fmt_e((series.get((s, m, e, headline_region(s), "H")) or [{"rms": None}])[-1]["rms"])
+                              for s, m in cols])
+    lines += [table(header, out), ""]
+
+    # Plots: error vs h per surface, interior/all headline region, H and K, one panel per mesh type.
+    lines += ["### Error against mesh size", ""]
+    lines += ["Log-log RMS error against mean edge length h; the legend gives each line's order between the "
+              "two finest meshes. Lines that stop have errors at rounding level.", ""]
+    for s in surfaces:
+        mesh_types = [m for m in meshes if any(k[0] == s and k[1] == m for k in series)]
+        fig, axes = plt.subplots(2, len(mesh_types), figsize=(5.2 * len(mesh_types), 9), squeeze=False)
+        region = headline_region(s)
+        for col, m in enumerate(mesh_types):
+            for row, quantity in enumerate(("H", "K")):
+                ax = axes[row][col]
+                for i, (e, label) in enumerate(ESTIMATORS):
+                    lv = [r for r in series.get((s, m, e, region, quantity), []) if r["count"] and r["rms"] > ROUNDING]
+                    if not lv:
+                        continue
+                    p = order_of(lv)
+                    ax.plot([r["h"] for r in lv], [r["rms"] for r in lv], ms=4,
+                            label="%s (%s)" % (label, fmt_order(p)), **style(i))
+                ax.set_xscale("log")
+                ax.set_yscale("log")
+                ax.set_title("%s, %s: %s (%s)" % (s, m, quantity, region), fontsize=9)
+                ax.set_xlabel("h (mean edge length)")
+                ax.set_ylabel("RMS error of %s" % quantity)
+                ax.grid(True, which="both", alpha=0.3)
+                ax.legend(fontsize=6)
+        fig.tight_layout()
+        name = "accuracy_%s.png" % s
+        fig.savefig(os.path.join(figures, name), dpi=90)
+        plt.close(fig)
+        lines += ["![%s](figures/%s)" % (s, name), ""]
+
+    # Details.
+    lines += ["### Detailed tables", ""]
+    lines += ["<details><summary>RMS, max and order of k_max, k_min, H, K per surface, mesh, region "
+              "(finest mesh)</summary>", ""]
+    for s in surfaces:
+        for m in meshes:
+            for region in ("all", "interior") if s.startswith("graph_") else ("all",):
+                if not any(k[:2] == (s, m) for k in series):
+                    continue
+                finest = series.get((s, m, ESTIMATORS[0][0], region, "H"), [None])[-1]
+                lines += ["#### %s, %s, %s vertices (finest: %s vertices, h = %.3g)" % (
+                    s, m, region, "{:,}".format(finest["vertices"]), finest["h"]), ""]
+                header = ["estimator"]
+                for q in QUANTITIES:
+                    header += ["%s RMS" % q, "%s max" % q, "%s order" % q]
+                header.append("not estimable")
+                out = []
+                for e, label in ESTIMATORS:
+                    row = [label]
+                    failed = 0
+                    for q in QUANTITIES:
+                        lv = series.get((s, m, e, region, q), [])
+                        last = lv[-1] if lv else None
+                        row += [fmt_e(last["rms"] if last else None), fmt_e(last["max"] if last else None),
+                                fmt_order(order_of(lv))]
+                        failed = last["not_estimable"] if last else 0
+                    row.append(str(failed))
+                    out.append(row)
+                lines += [table(header, out), ""]
+    lines += ["</details>", ""]
+    return lines
+
+
+# ---------------------------------------------------------------------------
+# Bunny pictures
+# ---------------------------------------------------------------------------
+
+def bunny_section(accuracy_dir, figures):
+    vpath = os.path.join(accuracy_dir, "bunny_mean_curvature.csv")
+    fpath = os.path.join(accuracy_dir, "bunny_faces.csv")
+    if not (os.path.exists(vpath) and os.path.exists(fpath)):
+        return ["## The bunny", "", "No bunny output (accuracy_runner did not write it).", ""]
+    with open(vpath) as f:
+        header = f.readline().strip().split(",")
+    values = np.genfromtxt(vpath, delimiter=",", skip_header=1)
+    faces = np.genfromtxt(fpath, delimiter=",", skip_header=1, dtype=np.int64)
+    xyz = values[:, :3]
+    names = header[3:]
+    # bunny00.off is y-up; matplotlib's 3D axes are z-up.
+    pts = xyz[:, [0, 2, 1]]
+    tris = pts[faces]
+    # One colour scale for all panels, clamped at the 5th and 95th percentiles of H over every
+    # estimator (the scanned bunny is noisy: a few per cent of the vertices have |H| ten times
+    # the median and would wash the rest out), and centred on 0 so that the colour tells the sign.
+    lo_h, hi_h = (float(x) for x in np.nanpercentile(values[:, 3:], [5, 95]))
+    if lo_h < 0 < hi_h:
+        norm = matplotlib.colors.TwoSlopeNorm(0.0, lo_h, hi_h)
+    else:
+        norm = matplotlib.colors.Normalize(lo_h, hi_h)
+    cmap = matplotlib.colormaps["coolwarm"]
+    ncols = 4
+    nrows = int(math.ceil(len(names) / ncols))
+    fig = plt.figure(figsize=(4.5 * ncols, 4.2 * nrows))
+    lo, hi = pts.min(axis=0), pts.max(axis=0)
+    for i, name in enumerate(names):
+        ax = fig.add_subplot(nrows, ncols, i + 1, projection="3d")
+        h = values[:, 3 + i]
+        face_h = h[faces].mean(axis=1)
+        colors = cmap(norm(np.nan_to_num(face_h, nan=0.0)))
+        colors[~np.isfinite(face_h)] = (0.5, 0.5, 0.5, 1.0)  # not estimable: grey
+        ax.add_collection3d(Poly3DCollection(tris, facecolors=colors, linewidths=0))
+        ax.set_xlim(lo[0], hi[0])
+        ax.set_ylim(lo[1], hi[1])
+        ax.set_zlim(lo[2], hi[2])
+        ax.set_box_aspect(hi - lo, zoom=1.6)  # the default leaves the bunny small in its panel
+        ax.view_init(elev=10, azim=-80)
+        ax.set_axis_off()
+        ax.set_title(LABEL.get(name, name), fontsize=10)
+    fig.subplots_adjust(left=0, right=0.92, bottom=0, top=0.95, wspace=0, hspace=0.05)
+    cax = fig.add_axes([0.94, 0.2, 0.012, 0.6])
+    fig.colorbar(matplotlib.cm.ScalarMappable(norm=norm, cmap=cmap), cax=cax, label="mean curvature H")
+    fig.savefig(os.path.join(figures, "bunny_mean_curvature.png"), dpi=100)
+    plt.close(fig)
+    return ["## The bunny coloured by mean curvature", "",
+            "![bunny](figures/bunny_mean_curvature.png)", "",
+            "`bunny00.off` (%s vertices, about 1 unit across), face colour = mean of its vertices' H, one colour "
+            "scale for every panel, clamped at [%.3g, %.3g] (5th and 95th percentiles of H over all estimators) "
+            "and centred on 0; grey = not estimable. The \"given normals\" panel is given the package's default "
+            "normal estimate. Red: H > 0 (convex with outward normals), blue: H < 0." % (
+                "{:,}".format(len(xyz)), lo_h, hi_h), ""]
+
+
+# ---------------------------------------------------------------------------
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--bench-json", required=True)
+    ap.add_argument("--accuracy-dir", required=True)
+    ap.add_argument("--build-dir", default="build")
+    ap.add_argument("--out-dir", default=HERE, help="where REPORT.md and figures/ go (default: benchmark/)")
+    ap.add_argument("--quick", action="store_true", help="label the report as a quick (smoke) run")
+    ap.add_argument("--duration", default="", help="how long the pipeline took, for the report")
+    args = ap.parse_args()
+
+    figures = os.path.join(args.out_dir, "figures")
+    os.makedirs(figures, exist_ok=True)
+    speed, context = read_speed(args.bench_json)
+    rows = read_accuracy(os.path.join(args.accuracy_dir, "accuracy.csv"))
+
+    lines = ["# Curvature estimation: speed and accuracy report", ""]
+    lines += ["Generated by `scripts/make_report.sh%s` — do not edit by hand." % (" --quick" if args.quick else ""), ""]
+    if args.quick:
+        lines += ["> **Quick (smoke) run**: small meshes and short timings; not the report's real numbers.", ""]
+    lines += ["## Machine", ""]
+    info = machine(args.build_dir, context)
+    if args.duration:
+        info["Pipeline duration"] = args.duration
+    lines += [table(["", ""], [[k, v] for k, v in info.items()]), ""]
+    lines += targets_section(speed, args.quick)
+    lines += speed_section(speed, figures, args.quick)
+    lines += accuracy_section(rows, figures)
+    lines += bunny_section(args.accuracy_dir, figures)
+
+    with open(os.path.join(args.out_dir, "REPORT.md"), "w") as f:
+        f.write("\n".join(lines))
+    print("make_report: wrote %s and %s" % (os.path.join(args.out_dir, "REPORT.md"), figures))
+
+
+if __name__ == "__main__":
+    main()
