@@ -39,8 +39,9 @@ step "dependencies"
 bash scripts/install_dependencies.sh --report
 
 step "configure and build ($build, Release, -j$jobs)"
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCE_BUILD_BENCHMARKS=ON > "$build.configure.log" 2>&1 ||
-  { cat "$build.configure.log" >&2; exit 1; }
+mkdir -p "$build"
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCE_BUILD_BENCHMARKS=ON > "$build/make_report_configure.log" 2>&1 ||
+  { cat "$build/make_report_configure.log" >&2; exit 1; }
 cmake --build "$build" --target accuracy_runner bench_estimators -j "$jobs"
 mkdir -p "$raw"
 
