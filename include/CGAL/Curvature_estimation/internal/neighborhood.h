@@ -1,5 +1,6 @@
-// k-ring neighbourhoods of a vertex of a FaceGraph, grown one ring at a time so
-// that an estimator can widen its stencil without gathering it again.
+// k-ring neighbourhoods of a vertex of a FaceGraph or of a tetrahedral complex,
+// grown one ring at a time so that an estimator can widen its stencil without
+// gathering it again.
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_NEIGHBORHOOD_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_NEIGHBORHOOD_H
 
@@ -91,6 +92,68 @@ private:
   std::vector<char> has_face_;  // per incoming halfedge of the center
   bool center_on_border_ = false;
   bool one_ring_in_fan_order_ = false;
+};
+
+// k-rings over the neighbours of Tetrahedral_complex_stars, one ring at a time.
+// A stamp per vertex (allocated on first use, so that copying an unused
+// collector is cheap) replaces the surface collector's linear search, since
+// tetrahedral rings hold hundreds of vertices.
+class Tetrahedral_ring_collector
+{
+public:
+  template <typename Stars>
+  void start(std::size_t center, const Stars& stars)
+  {
+    if (stamps_.size() != stars.size()) {
+      stamps_.assign(stars.size(), 0);
+      stamp_ = 0;
+    }
+    if (++stamp_ == 0) {
+      std::fill(stamps_.begin(), stamps_.end(), 0);
+      stamp_ = 1;
+    }
+    vertices_.clear();
+    ring_ends_.clear();
+    vertices_.push_back(center);
+    stamps_[center] = stamp_;
+    ring_ends_.push_back(1);
+    add_neighbors(center, stars);
+    ring_ends_.push_back(vertices_.size());
+  }
+
+  // Adds the next ring; returns false when it is empty (the component is exhausted).
+  template <typename Stars>
+  bool extend(const Stars& stars)
+  {
+    const std::size_t first = ring_ends_[ring_ends_.size() - 2];
+    const std::size_t last = ring_ends_.back();
+    for (std::size_t i = first; i < last; ++i)
+      add_neighbors(vertices_[i], stars);
+    ring_ends_.push_back(vertices_.size());
+    return ring_ends_.back() > last;
+  }
+
+  int rings() const { return static_cast<int>(ring_ends_.size()) - 1; }
+  const std::vector<std::size_t>& vertices() const { return vertices_; }
+  std::size_t ring_end(int r) const { return ring_ends_[r]; }
+
+private:
+  template <typename Stars>
+  void add_neighbors(std::size_t v, const Stars& stars)
+  {
+    for (std::size_t k = stars.neighbor_offsets[v]; k < stars.neighbor_offsets[v + 1]; ++k) {
+      const std::size_t w = stars.neighbors[k];
+      if (stamps_[w] != stamp_) {
+        stamps_[w] = stamp_;
+        vertices_.push_back(w);
+      }
+    }
+  }
+
+  std::vector<unsigned> stamps_;
+  unsigned stamp_ = 0;
+  std::vector<std::size_t> vertices_;
+  std::vector<std::size_t> ring_ends_;
 };
 
 } // namespace internal

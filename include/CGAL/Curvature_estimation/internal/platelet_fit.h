@@ -1,6 +1,23 @@
-// Hamann's platelet fit at one vertex of a FaceGraph: gather the k-ring, express
-// it in a tangent frame, fit the paraboloid, widen while ill-conditioned; and the
-// second-order normal that the fit uses by default.
+// Hamann's platelet fit at one vertex, written once for surfaces of R^3
+// (FaceGraph, tangent dimension 2) and hypersurfaces of R^4 (tetrahedral
+// complexes, tangent dimension 3): gather the k-ring, express it in a tangent
+// frame, fit the paraboloid, widen while ill-conditioned; and the second-order
+// normal that the fit uses by default.
+//
+// The core, Platelet_fit_core<Neighborhood>, knows nothing of meshes. A
+// Neighborhood policy gives
+//   ambient_dimension, Vertex, Estimate     N (3 or 4), the vertex key, the result type
+//   point(v)                                the point of v in double
+//   start(v), extend(), rings(), vertices(), ring_end(r)
+//                                           the k-rings of v, grown one ring at a time
+//   center_on_border(v)                     after start(v)
+//   platelet_for_normal(method)             whether initial_normal needs the gathered 1-ring
+//   initial_normal(v, method, offsets, scale)
+//                                           the first-order normal (any length); offsets
+//                                           are the gathered 1-ring relative to v, over scale
+//   restart_from_hyperplane                 see estimate_normal
+//   estimate(status, curvature, scale)      the result from the curvature in the fit's frame
+// Models: Face_graph_platelet (here) and Tetrahedral_platelet (tetrahedral_platelet_fit.h).
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_PLATELET_FIT_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_PLATELET_FIT_H
 
@@ -20,6 +37,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -69,41 +87,99 @@ Platelet_fit_settings platelet_fit_settings(const NamedParameters& np, const cha
 constexpr int cubic_normal_min_rings = 3;
 constexpr double cubic_normal_condition_factor = 1e3;
 
+// The unit normal of the least-squares hyperplane through `count` points: the
+// eigenvector of the smallest eigenvalue of their scatter matrix, by cyclic
+// Jacobi rotations (Eigen's iterative solver warns under GCC 12's -Wmaybe-uninitialized).
+template <int N>
+Eigen::Matrix<double, N, 1> least_squares_hyperplane_normal(const Eigen::Matrix<double, N, 1>* points,
+                                                            std::size_t count)
+{
+  using Vector = Eigen::Matrix<double, N, 1>;
+  using Square = Eigen::Matrix<double, N, N>;
+  Vector mean = Vector::Zero();
+  for (std::size_t i = 0; i < count; ++i)
+    mean += points[i];
+  mean /= double(count);
+  Square scatter = Square::Zero();
+  for (std::size_t i = 0; i < count; ++i)
+    scatter.noalias() += (points[i] - mean) * (points[i] - mean).transpose();
+  Square vectors = Square::Identity();
+  for (int sweep = 0; sweep < 50; ++sweep) {
+    double off = 0;
+    for (int p = 0; p < N; ++p)
+      for (int q = p + 1; q < N; ++q)
+        off += scatter(p, q) * scatter(p, q);
+    if (!(off > 1e-30 * scatter.squaredNorm()))
+      break;
+    for (int p = 0; p < N; ++p)
+      for (int q = p + 1; q < N; ++q) {
+        if (scatter(p, q) == 0)
+          continue;
+        const double theta = 0.5 * (scatter(q, q) - scatter(p, p)) / scatter(p, q);
+        const double t = (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1));
+        const double c = 1 / std::sqrt(t * t + 1), s = t * c;
+        for (int k = 0; k < N; ++k) {  // scatter <- J^T scatter J, vectors <- vectors J
+          const double a = scatter(k, p), b = scatter(k, q);
+          scatter(k, p) = c * a - s * b;
+          scatter(k, q) = s * a + c * b;
+        }
+        for (int k = 0; k < N; ++k) {
+          const double a = scatter(p, k), b = scatter(q, k);
+          scatter(p, k) = c * a - s * b;
+          scatter(q, k) = s * a + c * b;
+        }
+        for (int k = 0; k < N; ++k) {
+          const double a = vectors(k, p), b = vectors(k, q);
+          vectors(k, p) = c * a - s * b;
+          vectors(k, q) = s * a + c * b;
+        }
+      }
+  }
+  int smallest = 0;
+  scatter.diagonal().minCoeff(&smallest);
+  return vectors.col(smallest);
+}
 
-template <typename FaceGraph, typename VertexPointMap>
-class Platelet_fitter
+template <typename Neighborhood>
+class Platelet_fit_core
 {
 public:
-  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
+  static constexpr int N = Neighborhood::ambient_dimension;
+  static constexpr int D = N - 1;
+  using Vertex = typename Neighborhood::Vertex;
+  using Estimate = typename Neighborhood::Estimate;
+  using Vector = Eigen::Matrix<double, N, 1>;
+  using Tangents = Eigen::Matrix<double, N, D>;
 
-  Platelet_fitter(const FaceGraph& g, VertexPointMap vpm, const Platelet_fit_settings& settings)
-    : g_(&g), vpm_(vpm), settings_(settings)
+  // `a` and `b` construct the neighbourhood: the mesh and its point map.
+  template <typename A, typename B>
+  Platelet_fit_core(const A& a, const B& b, const Platelet_fit_settings& settings)
+    : neighborhood_(a, b), settings_(settings)
   {}
 
   // Hamann's fit: the paraboloid through the k-ring in the tangent frame of the
   // given `normal` (any length), widened while ill-conditioned.
-  Surface_estimate fit(vertex_descriptor v, const Eigen::Vector3d& normal)
+  Estimate fit(Vertex v, const Vector& normal)
   {
     const double length = normal.norm();
     if (!(length > 0) || !std::isfinite(length) || !gather(v))
-      return Surface_estimate();
+      return Estimate();
     return fit_curvature(normal / length);
   }
 
   // The same with the normal estimated by `method`.
-  Surface_estimate fit(vertex_descriptor v, Vertex_normal_method method)
+  Estimate fit(Vertex v, Vertex_normal_method method)
   {
-    Eigen::Vector3d normal;
+    Vector normal;
     if (!gather(v) || !estimate_normal(v, method, normal))
-      return Surface_estimate();
+      return Estimate();
     return fit_curvature(normal);
   }
 
   // The unit normal by `method`; false where there is none.
-  bool normal(vertex_descriptor v, Vertex_normal_method method, Eigen::Vector3d& normal)
+  bool normal(Vertex v, Vertex_normal_method method, Vector& normal)
   {
-    // Face averages need no neighbourhood.
-    if (method == Vertex_normal_method::quadric_fit && !gather(v))
+    if (neighborhood_.platelet_for_normal(method) && !gather(v))
       return false;
     return estimate_normal(v, method, normal);
   }
@@ -111,18 +187,18 @@ public:
 private:
   // The 1-ring, and the local length scale (mean distance to the 1-ring) that
   // makes the fit scale invariant.
-  bool gather(vertex_descriptor v)
+  bool gather(Vertex v)
   {
-    center_ = point_in_double(vpm_, v);
+    center_ = neighborhood_.point(v);
     if (!center_.allFinite())
       return false;
-    rings_.start(v, *g_);
+    neighborhood_.start(v);
     offsets_.clear();
-    offsets_.push_back(Eigen::Vector3d::Zero());
+    offsets_.push_back(Vector::Zero());
     double length_sum = 0;
     int length_count = 0;
-    for (std::size_t i = 1; i < rings_.ring_end(1); ++i) {
-      const Eigen::Vector3d offset = point_in_double(vpm_, rings_.vertices()[i]) - center_;
+    for (std::size_t i = 1; i < neighborhood_.ring_end(1); ++i) {
+      const Vector offset = neighborhood_.point(neighborhood_.vertices()[i]) - center_;
       offsets_.push_back(offset);
       double length = offset.norm();
       if (!(length > 1e-150 && length < 1e150))
@@ -135,9 +211,9 @@ private:
     if (length_count == 0 || !(length_sum > 0))
       return false;
     scale_ = length_sum / length_count;
-    for (Eigen::Vector3d& offset : offsets_)
+    for (Vector& offset : offsets_)
       offset /= scale_;
-    on_border_ = rings_.center_on_border();
+    on_border_ = neighborhood_.center_on_border(v);
     return true;
   }
 
@@ -146,22 +222,20 @@ private:
   // Gathers rings up to `rings`; false when the component has fewer.
   bool reach(int rings)
   {
-    while (rings_.rings() < rings) {
-      if (!rings_.extend(*g_))
+    while (neighborhood_.rings() < rings) {
+      if (!neighborhood_.extend())
         return false;
-      for (std::size_t i = offsets_.size(); i < rings_.vertices().size(); ++i)
-        offsets_.push_back((point_in_double(vpm_, rings_.vertices()[i]) - center_) / scale_);
+      for (std::size_t i = offsets_.size(); i < neighborhood_.vertices().size(); ++i)
+        offsets_.push_back((neighborhood_.point(neighborhood_.vertices()[i]) - center_) / scale_);
     }
     return true;
   }
 
   // Fits over the rings up to `rings`, widening up to `max_rings` until the
   // normal equations are well-conditioned; returns the rings used, 0 on failure.
-  using Tangents = Eigen::Matrix<double, 3, 2>;
-
   template <typename Fit>
-  int fit_widening(const Eigen::Vector3d& normal, const Tangents& tangents, int rings, int max_rings,
-                   double max_condition, Fit& fit)
+  int fit_widening(const Vector& normal, const Tangents& tangents, int rings, int max_rings, double max_condition,
+                   Fit& fit)
   {
     for (; rings <= max_rings && reach(rings); ++rings)
       if (fit_in_frame(normal, tangents, rings, max_condition, fit))
@@ -169,101 +243,157 @@ private:
     return 0;
   }
 
-  // A face average, or for quadric_fit a normal of second order or better: the
-  // area-weighted normal corrected by the gradient of a Taylor fit in its frame.
+  // The neighbourhood's first-order normal, or for quadric_fit a normal of second
+  // order or better: that normal corrected by the gradient of a Taylor fit in its
+  // frame (see fit_normal).
+  bool estimate_normal(Vertex v, Vertex_normal_method method, Vector& normal)
+  {
+    normal = neighborhood_.initial_normal(v, method, offsets_, scale_);
+    if (!normal.allFinite() || !(normal.squaredNorm() > 0))
+      return false;
+    normal.normalize();
+    if (method != Vertex_normal_method::quadric_fit)
+      return true;
+    if constexpr (!Neighborhood::restart_from_hyperplane)
+      return fit_normal(normal);
+    else {
+      const Vector first = normal;
+      if (fit_normal(normal))
+        return true;
+      // Start again from the normal of the best-fitting hyperplane through the
+      // 1-ring (oriented as the first one): see Tetrahedral_platelet.
+      normal = least_squares_hyperplane_normal<N>(offsets_.data(), neighborhood_.ring_end(1));
+      if (normal.dot(first) < 0)
+        normal = -normal;
+      return normal.allFinite() && fit_normal(normal);
+    }
+  }
+
   // A symmetric interior stencil cancels the odd terms, so the degree-2 fit over
   // the starting rings suffices there; a one-sided boundary stencil does not, and
   // a boundary vertex fits the cubic terms too, falling back to degree 2 where
   // that is ill-conditioned up to the widest ring.
-  bool estimate_normal(vertex_descriptor v, Vertex_normal_method method, Eigen::Vector3d& normal)
+  bool fit_normal(Vector& normal)
   {
-    const bool fitted = method == Vertex_normal_method::quadric_fit;
-    normal = fitted ? corner_normal_sum(v) : face_average_normal(v, *g_, vpm_, method);
-    if (!normal.allFinite() || !(normal.squaredNorm() > 0))
-      return false;
-    normal.normalize();
-    return !fitted || fit_normal(normal);
-  }
-
-  // The sum of the faces' corner normals at the center, from the gathered 1-ring:
-  // the area-weighted normal on a triangle mesh, without walking the faces again.
-  Eigen::Vector3d corner_normal_sum(vertex_descriptor v) const
-  {
-    if (!rings_.one_ring_in_fan_order())
-      return face_average_normal(v, *g_, vpm_, Vertex_normal_method::area_weighted);
-    const std::size_t valence = rings_.ring_end(1) - 1;
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (std::size_t k = 0; k < valence; ++k) {
-      const Eigen::Vector3d& previous = offsets_[1 + k];
-      const Eigen::Vector3d& next = offsets_[1 + (k + 1) % valence];
-      if (rings_.has_face(k) && previous.allFinite() && next.allFinite())
-        sum += next.cross(previous);
-    }
-    return sum;
-  }
-
-  bool fit_normal(Eigen::Vector3d& normal)
-  {
-    const Tangents tangents = tangent_basis<3>(normal);
+    const Tangents tangents = tangent_basis<N>(normal);
     if (on_border_) {
       const int rings = (std::max)(cubic_normal_min_rings, start_rings());
-      Taylor_fit<2, 1, 3> cubic;
+      Taylor_fit<D, 1, 3> cubic;
       if (fit_widening(normal, tangents, rings, (std::max)(rings, settings_.max_rings),
                        cubic_normal_condition_factor * settings_.max_condition, cubic) != 0)
         return correct_normal(normal, tangents, cubic.gradient());
     }
-    Taylor_fit<2, 1, 2> quadratic;
+    Taylor_fit<D, 1, 2> quadratic;
     return fit_widening(normal, tangents, start_rings(), settings_.max_rings, settings_.max_condition, quadratic) != 0 &&
            correct_normal(normal, tangents, quadratic.gradient());
   }
 
-  static bool correct_normal(Eigen::Vector3d& normal, const Tangents& tangents, const Eigen::Vector2d& gradient)
+  static bool correct_normal(Vector& normal, const Tangents& tangents, const Eigen::Matrix<double, D, 1>& gradient)
   {
     normal = (normal - tangents * gradient).normalized();
     return normal.allFinite();
   }
 
-  Surface_estimate fit_curvature(const Eigen::Vector3d& normal)
+  Estimate fit_curvature(const Vector& normal)
   {
-    Surface_estimate result;
-    const Tangents tangents = tangent_basis<3>(normal);
-    Taylor_fit<2, 2, 2> fit;
+    const Tangents tangents = tangent_basis<N>(normal);
+    Taylor_fit<D, 2, 2> fit;
     const int rings = fit_widening(normal, tangents, start_rings(), settings_.max_rings, settings_.max_condition, fit);
     if (rings == 0)
-      return result;
-    const Graph_curvature<3> curvature = graph_curvature<3>(fit.hessian(), fit.gradient(), tangents, normal);
+      return Estimate();
+    const Graph_curvature<N> curvature = graph_curvature<N>(fit.hessian(), fit.gradient(), tangents, normal);
     if (!curvature.curvatures.allFinite() || !curvature.directions.allFinite())
-      return result;
-    return Surface_estimate::from_principal(rings > 1 ? Estimation_status::widened : Estimation_status::ok,
-                                            curvature.curvatures[0] / scale_, curvature.curvatures[1] / scale_,
-                                            curvature.directions.col(0), curvature.directions.col(1), normal);
+      return Estimate();
+    return Neighborhood::estimate(rings > 1 ? Estimation_status::widened : Estimation_status::ok, curvature, scale_);
   }
 
   // Samples weighted by a Gaussian of width the mean 1-ring edge in the cubic
   // fit only (see cubic_normal_min_rings); Hamann's fit is unweighted.
   template <typename Fit>
-  bool fit_in_frame(const Eigen::Vector3d& normal, const Tangents& tangents, int rings, double max_condition,
-                    Fit& fit) const
+  bool fit_in_frame(const Vector& normal, const Tangents& tangents, int rings, double max_condition, Fit& fit) const
   {
-    constexpr bool weighted = Fit::unknowns > Taylor_fit<2, 1, 2>::unknowns;
+    constexpr bool weighted = Fit::unknowns > Taylor_fit<D, 1, 2>::unknowns;
     fit.clear();
-    for (std::size_t i = 1; i < rings_.ring_end(rings); ++i) {
-      const Eigen::Vector3d& q = offsets_[i];
+    for (std::size_t i = 1; i < neighborhood_.ring_end(rings); ++i) {
+      const Vector& q = offsets_[i];
       if (q.allFinite())
         fit.add(tangents.transpose() * q, normal.dot(q), weighted ? std::exp(-q.squaredNorm()) : 1.0);
     }
     return fit.solve(max_condition);
   }
 
-  const FaceGraph* g_;
-  VertexPointMap vpm_;
+  Neighborhood neighborhood_;
   Platelet_fit_settings settings_;
-  Ring_collector<FaceGraph> rings_;
-  std::vector<Eigen::Vector3d> offsets_;  // scaled p_w - p_v, aligned with rings_.vertices()
-  Eigen::Vector3d center_ = Eigen::Vector3d::Zero();
+  std::vector<Vector> offsets_;  // scaled p_w - p_v, aligned with neighborhood_.vertices()
+  Vector center_ = Vector::Zero();
   double scale_ = 1;
   bool on_border_ = false;
 };
+
+// The neighbourhood policy of a FaceGraph: k-rings by halfedge circulation, the
+// area-weighted normal (or another face average) as the first-order normal.
+template <typename FaceGraph, typename VertexPointMap>
+class Face_graph_platelet
+{
+public:
+  static constexpr int ambient_dimension = 3;
+  static constexpr bool restart_from_hyperplane = false;
+  using Vertex = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
+  using Estimate = Surface_estimate;
+
+  Face_graph_platelet(const FaceGraph& g, VertexPointMap vpm) : g_(&g), vpm_(vpm) {}
+
+  Eigen::Vector3d point(Vertex v) const { return point_in_double(vpm_, v); }
+  void start(Vertex v) { rings_.start(v, *g_); }
+  bool extend() { return rings_.extend(*g_); }
+  int rings() const { return rings_.rings(); }
+  const std::vector<Vertex>& vertices() const { return rings_.vertices(); }
+  std::size_t ring_end(int r) const { return rings_.ring_end(r); }
+  bool center_on_border(Vertex) const { return rings_.center_on_border(); }
+
+  // Face averages need no neighbourhood.
+  static bool platelet_for_normal(Vertex_normal_method method) { return method == Vertex_normal_method::quadric_fit; }
+
+  // The area-weighted normal, from the gathered 1-ring, for quadric_fit; else the face average by `method`.
+  Eigen::Vector3d initial_normal(Vertex v, Vertex_normal_method method, const std::vector<Eigen::Vector3d>& offsets,
+                                 double) const
+  {
+    return method == Vertex_normal_method::quadric_fit ? corner_normal_sum(v, offsets)
+                                                       : face_average_normal(v, *g_, vpm_, method);
+  }
+
+  static Surface_estimate estimate(Estimation_status status, const Graph_curvature<3>& curvature, double scale)
+  {
+    return Surface_estimate::from_principal(status, curvature.curvatures[0] / scale, curvature.curvatures[1] / scale,
+                                            curvature.directions.col(0), curvature.directions.col(1),
+                                            curvature.normal);
+  }
+
+private:
+  // The sum of the faces' corner normals at the center, from the gathered 1-ring:
+  // the area-weighted normal on a triangle mesh, without walking the faces again.
+  Eigen::Vector3d corner_normal_sum(Vertex v, const std::vector<Eigen::Vector3d>& offsets) const
+  {
+    if (!rings_.one_ring_in_fan_order())
+      return face_average_normal(v, *g_, vpm_, Vertex_normal_method::area_weighted);
+    const std::size_t valence = rings_.ring_end(1) - 1;
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (std::size_t k = 0; k < valence; ++k) {
+      const Eigen::Vector3d& previous = offsets[1 + k];
+      const Eigen::Vector3d& next = offsets[1 + (k + 1) % valence];
+      if (rings_.has_face(k) && previous.allFinite() && next.allFinite())
+        sum += next.cross(previous);
+    }
+    return sum;
+  }
+
+  const FaceGraph* g_;
+  VertexPointMap vpm_;
+  Ring_collector<FaceGraph> rings_;
+};
+
+template <typename FaceGraph, typename VertexPointMap>
+using Platelet_fitter = Platelet_fit_core<Face_graph_platelet<FaceGraph, VertexPointMap>>;
 
 } // namespace internal
 } // namespace Curvature_estimation
