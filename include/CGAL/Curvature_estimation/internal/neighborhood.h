@@ -80,11 +80,16 @@ public:
 
 private:
   // A linear search: neighbourhoods hold tens of vertices, and the 1-ring of a
-  // non-manifold vertex may repeat a neighbour.
+  // non-manifold vertex may repeat a neighbour. (A plain loop: std::find is not
+  // inlined and costs more than the search.)
   void add_if_new(vertex_descriptor w)
   {
-    if (std::find(vertices_.begin(), vertices_.end(), w) == vertices_.end())
-      vertices_.push_back(w);
+    const vertex_descriptor* const begin = vertices_.data();
+    const vertex_descriptor* const end = begin + vertices_.size();
+    for (const vertex_descriptor* it = begin; it != end; ++it)
+      if (*it == w)
+        return;
+    vertices_.push_back(w);
   }
 
   std::vector<vertex_descriptor> vertices_;

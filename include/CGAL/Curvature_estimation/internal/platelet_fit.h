@@ -12,9 +12,10 @@
 //                                           the k-rings of v, grown one ring at a time
 //   center_on_border(v)                     after start(v)
 //   platelet_for_normal(method)             whether initial_normal needs the gathered 1-ring
-//   initial_normal(v, method, offsets, scale)
+//   initial_normal(v, method, offsets, finite, scale)
 //                                           the first-order normal (any length); offsets
-//                                           are the gathered 1-ring relative to v, over scale
+//                                           are the gathered 1-ring relative to v, over
+//                                           scale, finite[i] whether offsets[i] is
 //   restart_from_hyperplane                 see estimate_normal
 //   estimate(status, curvature, scale)      the result from the curvature in the fit's frame
 // Models: Face_graph_platelet (here) and Tetrahedral_platelet (tetrahedral_platelet_fit.h).
@@ -190,14 +191,15 @@ private:
   bool gather(Vertex v)
   {
     center_ = neighborhood_.point(v);
-    if (!center_.allFinite())
+    if (!all_finite(center_))
       return false;
     neighborhood_.start(v);
     offsets_.clear();
     offsets_.push_back(Vector::Zero());
     double length_sum = 0;
     int length_count = 0;
-    for (std::size_t i = 1; i < neighborhood_.ring_end(1); ++i) {
+    const std::size_t end = neighborhood_.ring_end(1);
+    for (std::size_t i = 1; i < end; ++i) {
       const Vector offset = neighborhood_.point(neighborhood_.vertices()[i]) - center_;
       offsets_.push_back(offset);
       double length = offset.norm();
@@ -211,10 +213,32 @@ private:
     if (length_count == 0 || !(length_sum > 0))
       return false;
     scale_ = length_sum / length_count;
-    for (Vector& offset : offsets_)
-      offset /= scale_;
+    // A product is cheaper than a division and as exact to rounding, unless 1 / scale
+    // overflows or is subnormal.
+    inverse_scale_ = 1 / scale_;
+    if (!std::isnormal(inverse_scale_))
+      inverse_scale_ = 0;
+    finite_.clear();
+    for (Vector& offset : offsets_) {
+      offset = to_scale(offset);
+      finite_.push_back(all_finite(offset));
+    }
     on_border_ = neighborhood_.center_on_border(v);
     return true;
+  }
+
+  Vector to_scale(const Vector& offset) const
+  {
+    return inverse_scale_ != 0 ? Vector(offset * inverse_scale_) : Vector(offset / scale_);
+  }
+
+  template <typename Matrix>
+  static bool all_finite(const Matrix& m)
+  {
+    bool finite = true;
+    for (int i = 0; i < m.size(); ++i)
+      finite = finite && std::isfinite(m.data()[i]);
+    return finite;
   }
 
   int start_rings() const { return on_border_ ? settings_.boundary_rings : settings_.rings; }
@@ -225,8 +249,10 @@ private:
     while (neighborhood_.rings() < rings) {
       if (!neighborhood_.extend())
         return false;
-      for (std::size_t i = offsets_.size(); i < neighborhood_.vertices().size(); ++i)
-        offsets_.push_back((neighborhood_.point(neighborhood_.vertices()[i]) - center_) / scale_);
+      for (std::size_t i = offsets_.size(); i < neighborhood_.vertices().size(); ++i) {
+        offsets_.push_back(to_scale(neighborhood_.point(neighborhood_.vertices()[i]) - center_));
+        finite_.push_back(all_finite(offsets_.back()));
+      }
     }
     return true;
   }
@@ -248,8 +274,8 @@ private:
   // frame (see fit_normal).
   bool estimate_normal(Vertex v, Vertex_normal_method method, Vector& normal)
   {
-    normal = neighborhood_.initial_normal(v, method, offsets_, scale_);
-    if (!normal.allFinite() || !(normal.squaredNorm() > 0))
+    normal = neighborhood_.initial_normal(v, method, offsets_, finite_, scale_);
+    if (!all_finite(normal) || !(normal.squaredNorm() > 0))
       return false;
     normal.normalize();
     if (method != Vertex_normal_method::quadric_fit)
@@ -265,7 +291,7 @@ private:
       normal = least_squares_hyperplane_normal<N>(offsets_.data(), neighborhood_.ring_end(1));
       if (normal.dot(first) < 0)
         normal = -normal;
-      return normal.allFinite() && fit_normal(normal);
+      return all_finite(normal) && fit_normal(normal);
     }
   }
 
@@ -291,7 +317,7 @@ private:
   static bool correct_normal(Vector& normal, const Tangents& tangents, const Eigen::Matrix<double, D, 1>& gradient)
   {
     normal = (normal - tangents * gradient).normalized();
-    return normal.allFinite();
+    return all_finite(normal);
   }
 
   Estimate fit_curvature(const Vector& normal)
@@ -302,7 +328,7 @@ private:
     if (rings == 0)
       return Estimate();
     const Graph_curvature<N> curvature = graph_curvature<N>(fit.hessian(), fit.gradient(), tangents, normal);
-    if (!curvature.curvatures.allFinite() || !curvature.directions.allFinite())
+    if (!all_finite(curvature.curvatures) || !all_finite(curvature.directions))
       return Estimate();
     return Neighborhood::estimate(rings > 1 ? Estimation_status::widened : Estimation_status::ok, curvature, scale_);
   }
@@ -314,10 +340,12 @@ private:
   {
     constexpr bool weighted = Fit::unknowns > Taylor_fit<D, 1, 2>::unknowns;
     fit.clear();
-    for (std::size_t i = 1; i < neighborhood_.ring_end(rings); ++i) {
+    const Eigen::Matrix<double, D, N> to_tangent = tangents.transpose();
+    const std::size_t end = neighborhood_.ring_end(rings);  // hoisted: fit.add writes memory
+    for (std::size_t i = 1; i < end; ++i) {
       const Vector& q = offsets_[i];
-      if (q.allFinite())
-        fit.add(tangents.transpose() * q, normal.dot(q), weighted ? std::exp(-q.squaredNorm()) : 1.0);
+      if (finite_[i])
+        fit.add(to_tangent * q, normal.dot(q), weighted ? std::exp(-q.squaredNorm()) : 1.0);
     }
     return fit.solve(max_condition);
   }
@@ -325,8 +353,10 @@ private:
   Neighborhood neighborhood_;
   Platelet_fit_settings settings_;
   std::vector<Vector> offsets_;  // scaled p_w - p_v, aligned with neighborhood_.vertices()
+  std::vector<char> finite_;     // whether each offset is finite
   Vector center_ = Vector::Zero();
   double scale_ = 1;
+  double inverse_scale_ = 1;     // 1 / scale_, or 0 where that is not a normal number
   bool on_border_ = false;
 };
 
@@ -356,9 +386,9 @@ public:
 
   // The area-weighted normal, from the gathered 1-ring, for quadric_fit; else the face average by `method`.
   Eigen::Vector3d initial_normal(Vertex v, Vertex_normal_method method, const std::vector<Eigen::Vector3d>& offsets,
-                                 double) const
+                                 const std::vector<char>& finite, double) const
   {
-    return method == Vertex_normal_method::quadric_fit ? corner_normal_sum(v, offsets)
+    return method == Vertex_normal_method::quadric_fit ? corner_normal_sum(v, offsets, finite)
                                                        : face_average_normal(v, *g_, vpm_, method);
   }
 
@@ -372,17 +402,17 @@ public:
 private:
   // The sum of the faces' corner normals at the center, from the gathered 1-ring:
   // the area-weighted normal on a triangle mesh, without walking the faces again.
-  Eigen::Vector3d corner_normal_sum(Vertex v, const std::vector<Eigen::Vector3d>& offsets) const
+  Eigen::Vector3d corner_normal_sum(Vertex v, const std::vector<Eigen::Vector3d>& offsets,
+                                    const std::vector<char>& finite) const
   {
     if (!rings_.one_ring_in_fan_order())
       return face_average_normal(v, *g_, vpm_, Vertex_normal_method::area_weighted);
     const std::size_t valence = rings_.ring_end(1) - 1;
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     for (std::size_t k = 0; k < valence; ++k) {
-      const Eigen::Vector3d& previous = offsets[1 + k];
-      const Eigen::Vector3d& next = offsets[1 + (k + 1) % valence];
-      if (rings_.has_face(k) && previous.allFinite() && next.allFinite())
-        sum += next.cross(previous);
+      const std::size_t next = k + 1 < valence ? k + 2 : 1;
+      if (rings_.has_face(k) && finite[1 + k] && finite[next])
+        sum += offsets[next].cross(offsets[1 + k]);
     }
     return sum;
   }

@@ -17,6 +17,14 @@
 
 #include <limits>
 
+// Full unrolling of the fixed-size loops below: with constant indices the packed
+// matrix addressing folds away (without it these loops cost several times more).
+#if defined(__GNUC__) || defined(__clang__)
+#define CGAL_CURVATURE_ESTIMATION_UNROLL _Pragma("GCC unroll 32")
+#else
+#define CGAL_CURVATURE_ESTIMATION_UNROLL
+#endif
+
 namespace CGAL {
 namespace Curvature_estimation {
 namespace internal {
@@ -38,22 +46,24 @@ public:
 
   using Point = Eigen::Matrix<double, D, 1>;
   using Hessian = Eigen::Matrix<double, D, D>;
-  using Row = Eigen::Matrix<double, unknowns, 1>;
-  using Normal_matrix = Eigen::Matrix<double, unknowns, unknowns>;
 
   Taylor_fit() { clear(); }
 
   void clear()
   {
-    normal_matrix_.setZero();
-    right_hand_side_.setZero();
+    CGAL_CURVATURE_ESTIMATION_UNROLL
+    for (double& a : normal_matrix_)
+      a = 0;
+    CGAL_CURVATURE_ESTIMATION_UNROLL
+    for (double& b : right_hand_side_)
+      b = 0;
     size_ = 0;
   }
 
   // One sample: a point of the tangent space, the height above it, its weight.
   void add(const Point& x, double height, double weight = 1.0)
   {
-    Row row;
+    double row[unknowns];
     int column = 0;
     // Each order's monomials are scaled to be orthonormal coordinates of the
     // symmetric tensor x (x) ... (x) x (sqrt of the multiplicity), so that a
@@ -61,19 +71,32 @@ public:
     // orthogonal matrix and the condition number does not depend on how the frame
     // is turned in the tangent space. Quadratic terms first so that their
     // coefficients do not depend on FirstOrder.
+    CGAL_CURVATURE_ESTIMATION_UNROLL
     for (int i = 0; i < D; ++i)
+      CGAL_CURVATURE_ESTIMATION_UNROLL
       for (int j = i; j < D; ++j)
         row[column++] = (i == j ? 0.5 : half_sqrt2) * x[i] * x[j];
     if constexpr (FirstOrder == 1)
+      CGAL_CURVATURE_ESTIMATION_UNROLL
       for (int i = 0; i < D; ++i)
         row[column++] = x[i];
     if constexpr (LastOrder == 3)
+      CGAL_CURVATURE_ESTIMATION_UNROLL
       for (int i = 0; i < D; ++i)
+        CGAL_CURVATURE_ESTIMATION_UNROLL
         for (int j = i; j < D; ++j)
+          CGAL_CURVATURE_ESTIMATION_UNROLL
           for (int k = j; k < D; ++k)
-            row[column++] = std::sqrt(double(multiplicity(i, j, k))) * x[i] * x[j] * x[k];
-    normal_matrix_.noalias() += weight * row * row.transpose();
-    right_hand_side_.noalias() += (weight * height) * row;
+            row[column++] = sqrt_multiplicity(i, j, k) * x[i] * x[j] * x[k];
+    // The lower triangle only, row by row: the matrix is symmetric.
+    CGAL_CURVATURE_ESTIMATION_UNROLL
+    for (int i = 0, k = 0; i < unknowns; ++i) {
+      const double weighted = weight * row[i];
+      CGAL_CURVATURE_ESTIMATION_UNROLL
+      for (int j = 0; j <= i; ++j)
+        normal_matrix_[k++] += weighted * row[j];
+      right_hand_side_[i] += weight * height * row[i];
+    }
     ++size_;
   }
 
@@ -92,16 +115,26 @@ public:
     condition_ = std::numeric_limits<double>::infinity();
     if (size_ < unknowns)
       return false;
-    Normal_matrix inverse;
+    double inverse[packed];
     if (!invert(normal_matrix_, inverse))
       return false;
-    condition_ = normal_matrix_.cwiseAbs().colwise().sum().maxCoeff() * inverse.cwiseAbs().colwise().sum().maxCoeff();
+    condition_ = one_norm(normal_matrix_) * one_norm(inverse);
     if (!(condition_ <= max_condition))
       return false;
 
-    const Row coefficients = inverse * right_hand_side_;
+    double coefficients[unknowns];
+    CGAL_CURVATURE_ESTIMATION_UNROLL
+    for (int i = 0; i < unknowns; ++i) {
+      double value = 0;
+      CGAL_CURVATURE_ESTIMATION_UNROLL
+      for (int j = 0; j < unknowns; ++j)
+        value += inverse[index(i, j)] * right_hand_side_[j];
+      coefficients[i] = value;
+    }
     int column = 0;
+    CGAL_CURVATURE_ESTIMATION_UNROLL
     for (int i = 0; i < D; ++i)
+      CGAL_CURVATURE_ESTIMATION_UNROLL
       for (int j = i; j < D; ++j) {
         const double value = (i == j ? 1.0 : half_sqrt2) * coefficients[column];
         hessian_(i, j) = value;
@@ -109,7 +142,9 @@ public:
         ++column;
       }
     if constexpr (FirstOrder == 1)
-      gradient_ = coefficients.template segment<D>(column);
+      CGAL_CURVATURE_ESTIMATION_UNROLL
+      for (int i = 0; i < D; ++i)
+        gradient_[i] = coefficients[column + i];
     else
       gradient_.setZero();
     return true;
@@ -121,55 +156,86 @@ public:
 
 private:
   static constexpr double half_sqrt2 = 0.70710678118654752440;
+  // Symmetric matrices are stored packed: the lower triangle row by row.
+  static constexpr int packed = unknowns * (unknowns + 1) / 2;
+  static constexpr int index(int i, int j) { return i >= j ? i * (i + 1) / 2 + j : j * (j + 1) / 2 + i; }
 
-  // Number of distinct orderings of the indices i <= j <= k.
-  static constexpr int multiplicity(int i, int j, int k) { return i == k ? 1 : (i == j || j == k) ? 3 : 6; }
+  // The square root of the number of distinct orderings of the indices i <= j <= k.
+  static constexpr double sqrt_multiplicity(int i, int j, int k)
+  {
+    return i == k ? 1.0 : (i == j || j == k) ? 1.7320508075688772935 : 2.4494897427831780982;
+  }
 
-  // The inverse of a symmetric matrix, by Cholesky factorisation in plain loops
-  // (fully unrolled for these fixed sizes; Eigen's small triangular solves are
-  // several times slower); false if it is not positive definite.
-  static bool invert(const Normal_matrix& m, Normal_matrix& inverse)
+  // The largest column sum of absolute values of a packed symmetric matrix.
+  static double one_norm(const double (&m)[packed])
+  {
+    double largest = 0;
+    CGAL_CURVATURE_ESTIMATION_UNROLL
+    for (int j = 0; j < unknowns; ++j) {
+      double sum = 0;
+      CGAL_CURVATURE_ESTIMATION_UNROLL
+      for (int i = 0; i < unknowns; ++i)
+        sum += std::abs(m[index(i, j)]);
+      largest = sum > largest ? sum : largest;
+    }
+    return largest;
+  }
+
+  // The inverse of a packed symmetric matrix, by Cholesky factorisation in plain
+  // loops over fixed sizes (the compiler unrolls them; Eigen's small triangular
+  // solves are several times slower); false if it is not positive definite.
+  static bool invert(const double (&m)[packed], double (&inverse)[packed])
   {
     constexpr int n = unknowns;
-    double L[n][n] = {};
+    double L[packed];  // lower triangular factor, packed
+    double inverse_diagonal[n];
+    CGAL_CURVATURE_ESTIMATION_UNROLL
     for (int j = 0; j < n; ++j) {
-      double diagonal = m(j, j);
+      double diagonal = m[index(j, j)];
+      CGAL_CURVATURE_ESTIMATION_UNROLL
       for (int k = 0; k < j; ++k)
-        diagonal -= L[j][k] * L[j][k];
+        diagonal -= L[index(j, k)] * L[index(j, k)];
       if (!(diagonal > 0))
         return false;
-      L[j][j] = std::sqrt(diagonal);
+      L[index(j, j)] = std::sqrt(diagonal);
+      inverse_diagonal[j] = 1 / L[index(j, j)];
+      CGAL_CURVATURE_ESTIMATION_UNROLL
       for (int i = j + 1; i < n; ++i) {
-        double value = m(i, j);
+        double value = m[index(i, j)];
+        CGAL_CURVATURE_ESTIMATION_UNROLL
         for (int k = 0; k < j; ++k)
-          value -= L[i][k] * L[j][k];
-        L[i][j] = value / L[j][j];
+          value -= L[index(i, k)] * L[index(j, k)];
+        L[index(i, j)] = value * inverse_diagonal[j];
       }
     }
-    // L^-1, lower triangular, then inverse = L^-T L^-1.
-    double Linv[n][n] = {};
+    // L^-1, lower triangular, in place of L; then inverse = L^-T L^-1.
+    CGAL_CURVATURE_ESTIMATION_UNROLL
     for (int j = 0; j < n; ++j) {
-      Linv[j][j] = 1 / L[j][j];
+      CGAL_CURVATURE_ESTIMATION_UNROLL
       for (int i = j + 1; i < n; ++i) {
-        double value = 0;
-        for (int k = j; k < i; ++k)
-          value -= L[i][k] * Linv[k][j];
-        Linv[i][j] = value / L[i][i];
+        double value = -L[index(i, j)] * inverse_diagonal[j];
+        CGAL_CURVATURE_ESTIMATION_UNROLL
+        for (int k = j + 1; k < i; ++k)
+          value -= L[index(i, k)] * L[index(k, j)];
+        L[index(i, j)] = value * inverse_diagonal[i];
       }
+      L[index(j, j)] = inverse_diagonal[j];
     }
+    CGAL_CURVATURE_ESTIMATION_UNROLL
     for (int i = 0; i < n; ++i)
+      CGAL_CURVATURE_ESTIMATION_UNROLL
       for (int j = 0; j <= i; ++j) {
         double value = 0;
+        CGAL_CURVATURE_ESTIMATION_UNROLL
         for (int k = i; k < n; ++k)
-          value += Linv[k][i] * Linv[k][j];
-        inverse(i, j) = value;
-        inverse(j, i) = value;
+          value += L[index(k, i)] * L[index(k, j)];
+        inverse[index(i, j)] = value;
       }
     return true;
   }
 
-  Normal_matrix normal_matrix_;
-  Row right_hand_side_;
+  double normal_matrix_[packed];
+  double right_hand_side_[unknowns];
   int size_ = 0;
   double condition_ = std::numeric_limits<double>::infinity();
   Hessian hessian_ = Hessian::Zero();

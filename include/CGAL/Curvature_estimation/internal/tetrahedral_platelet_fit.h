@@ -77,7 +77,7 @@ public:
   // in coordinates relative to the center scaled by `scale`: the 3-volume-weighted
   // mean of the cells' normals, first order.
   Eigen::Vector4d initial_normal(Vertex v, Vertex_normal_method, const std::vector<Eigen::Vector4d>&,
-                                 double scale) const
+                                 const std::vector<char>&, double scale) const
   {
     const Eigen::Vector4d& center = point(v);
     Eigen::Vector4d sum = Eigen::Vector4d::Zero();
