@@ -1,9 +1,10 @@
-// curvature: estimates curvature at the vertices of a surface mesh file.
+// curvature: estimates curvature at the vertices of a surface mesh file, or of
+// the graph W = f(x, y, z) of a scalar field over a tetrahedral mesh.
 //
 //   curvature [options] INPUT
 //     -m, --method  paraboloid | curve-network | gauss-map | taubin | chen-schmitt | jet
 //     -o, --output  FILE.csv | FILE.ply     (without it: print a summary only)
-//     --rings N --order N --degree D --threads N --color-by k_max|k_min|mean|gaussian
+//     --rings N --order N --degree D --monge-degree D --threads N --color-by Q --scalars FILE.sol
 //
 // Rows of the CSV (and vertices of the PLY) are the vertices of the INPUT file, in
 // the file's order, even when the polygon soup had to be repaired before it could
@@ -16,6 +17,8 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Surface_mesh.h>
+
+#include "mesh_readers.h"
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
@@ -61,23 +64,36 @@ namespace fs = std::filesystem;
 
 constexpr const char* usage_text =
   "usage: curvature [options] INPUT\n"
-  "Estimates curvature at the vertices of a surface mesh (INPUT: .off .ply .obj .stl).\n"
+  "Estimates curvature at the vertices of a surface mesh (INPUT: .off .ply .obj .stl), or of the\n"
+  "graph W = f(x, y, z) of a scalar field over a tetrahedral mesh (INPUT: Medit .mesh, f from .sol).\n"
   "\n"
   "options:\n"
   "  -m, --method M     paraboloid (default) | curve-network | gauss-map | taubin | chen-schmitt | jet\n"
-  "  -o, --output FILE  FILE.csv or FILE.ply; without it, print a summary only\n"
+  "                     (.mesh input: paraboloid only)\n"
+  "  -o, --output FILE  FILE.csv or FILE.ply (surfaces only); without it, print a summary only\n"
   "      --rings N      neighbourhood rings a vertex's estimate starts with (default 1;\n"
-  "                     paraboloid, gauss-map, taubin, chen-schmitt)\n"
+  "                     paraboloid, gauss-map, taubin, chen-schmitt, jet, and .mesh input)\n"
   "      --order N      extrapolation order of curve-network, 1..4 (default 1)\n"
-  "      --degree D     degree of the jet fit (jet only)\n"
+  "      --degree D     degree of the jet (jet only), 2..4 (default 2)\n"
+  "      --monge-degree D  degree of the Monge form (jet only), 2..D (default 2)\n"
+  "      --scalars FILE the Medit .sol holding f for a .mesh INPUT (default: INPUT with the\n"
+  "                     extension .sol, which must exist)\n"
   "      --threads N    1: sequential; N > 1: at most N threads; 0: all cores (default 0)\n"
   "      --color-by Q   PLY colours: k_max | k_min | mean (default) | gaussian\n"
   "  -h, --help         print this help\n"
   "\n"
-  "CSV: header k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,status,\n"
+  "Surfaces. CSV: header k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,status,\n"
   "then one row per vertex of INPUT in the file's order; status is ok, widened or failed,\n"
   "and a failed row has nan values. PLY: the input's vertices and faces with these values\n"
-  "as vertex properties (status as 0 ok, 1 widened, 2 failed) and RGB colours.\n";
+  "as vertex properties (status as 0 ok, 1 widened, 2 failed) and RGB colours.\n"
+  "\n"
+  "Tetrahedral meshes. INPUT is an ASCII Medit .mesh (Vertices and Tetrahedra are used, other\n"
+  "sections skipped); the .sol has SolAtVertices with one scalar (type 1) per vertex. The\n"
+  "curvatures are those of the hypersurface (x, y, z, f) of R^4 with the normal towards increasing f\n"
+  "(tetrahedra are oriented accordingly), by paraboloid fitting over the tetrahedral platelet.\n"
+  "CSV only: header k_1,k_2,k_3,mean,gaussian,status (k_1 >= k_2 >= k_3, mean = their average,\n"
+  "gaussian = their product), one row per vertex of the .mesh in its order; a vertex in no\n"
+  "tetrahedron is failed.\n";
 
 // Every error a user can cause ends here: one line on stderr, exit code.
 struct Tool_error : std::runtime_error
@@ -88,7 +104,7 @@ struct Tool_error : std::runtime_error
 
 [[noreturn]] void fail(const std::string& message, int code = 1) { throw Tool_error(message, code); }
 
-enum class Method { paraboloid, curve_network, gauss_map, taubin, chen_schmitt };
+enum class Method { paraboloid, curve_network, gauss_map, taubin, chen_schmitt, jet };
 enum class Quantity { k_max, k_min, mean, gaussian };
 
 struct Options
@@ -99,6 +115,8 @@ struct Options
   std::string method_name = "paraboloid";
   std::optional<int> rings;
   std::optional<int> order;
+  std::optional<int> degree, monge_degree;
+  std::string scalars;
   int threads = 0;
   Quantity color_by = Quantity::mean;
 };
@@ -145,11 +163,10 @@ std::optional<Options> parse_arguments(int argc, char** argv)
       else if (m == "gauss-map") o.method = Method::gauss_map;
       else if (m == "taubin") o.method = Method::taubin;
       else if (m == "chen-schmitt") o.method = Method::chen_schmitt;
-      else if (m == "jet")
-        fail("method 'jet' (CGAL's jet fitting) is not implemented yet; use paraboloid, curve-network, "
-             "gauss-map, taubin or chen-schmitt", 2);
+      else if (m == "jet") o.method = Method::jet;
       else
-        fail("unknown method '" + m + "' (expected paraboloid, curve-network, gauss-map, taubin or chen-schmitt)", 2);
+        fail("unknown method '" + m + "' (expected paraboloid, curve-network, gauss-map, taubin, chen-schmitt or jet)",
+             2);
     } else if (arg == "-o" || arg == "--output") {
       o.output = value(arg);
     } else if (arg == "--rings") {
@@ -157,8 +174,12 @@ std::optional<Options> parse_arguments(int argc, char** argv)
     } else if (arg == "--order") {
       o.order = parse_int(arg, value(arg), 1, 4);
     } else if (arg == "--degree") {
-      (void)value(arg);
-      fail("--degree applies to the jet method only, which is not implemented yet", 2);
+      // Jet degree 1 is a plane: CGAL's Monge form needs degree 2 at least.
+      o.degree = parse_int(arg, value(arg), 2, 4);
+    } else if (arg == "--monge-degree") {
+      o.monge_degree = parse_int(arg, value(arg), 2, 4);
+    } else if (arg == "--scalars") {
+      o.scalars = value(arg);
     } else if (arg == "--threads") {
       o.threads = parse_int(arg, value(arg), 0, 1024);
     } else if (arg == "--color-by") {
@@ -182,6 +203,19 @@ std::optional<Options> parse_arguments(int argc, char** argv)
 
   if (o.order && o.method != Method::curve_network)
     fail("--order applies to the curve-network method only", 2);
+  if ((o.degree || o.monge_degree) && o.method != Method::jet)
+    fail(std::string(o.degree ? "--degree" : "--monge-degree") + " applies to the jet method only", 2);
+  if (o.monge_degree && *o.monge_degree > o.degree.value_or(2))
+    fail("--monge-degree " + std::to_string(*o.monge_degree) + " exceeds the jet degree " +
+           std::to_string(o.degree.value_or(2)) + " (see --degree)", 2);
+  if (lower_extension(o.input) == ".mesh") {
+    if (o.method != Method::paraboloid)
+      fail("method '" + o.method_name + "' does not apply to tetrahedral input (.mesh): use paraboloid", 2);
+    if (!o.output.empty() && lower_extension(o.output) == ".ply")
+      fail("PLY output is for surfaces: write the curvatures of tetrahedral input (.mesh) as CSV", 2);
+  } else if (!o.scalars.empty()) {
+    fail("--scalars applies to tetrahedral input (.mesh) only", 2);
+  }
   if (o.rings && o.method == Method::curve_network)
     fail("--rings does not apply to the curve-network method (it uses mesh lines; see --order)", 2);
   if (!o.output.empty()) {
@@ -211,62 +245,42 @@ struct Silence_cerr
   ~Silence_cerr() { std::cerr.rdbuf(saved); }
 };
 
-// Headers that CGAL 5.5's OFF and PLY readers do not survive, refused first:
-// - the readers size their arrays from the header's counts: a header declaring
-//   billions of elements in a small file would exhaust memory before the reader
-//   notices the file is short. Every vertex takes at least 6 bytes ("0 0 0\n",
-//   or 12 in binary), every face at least 2;
-// - the PLY reader adds a `property` to the last element without checking that
-//   there is one: a property before any `element` line crashes it; and it reads
-//   a vertex's x, y, z as float or double without checking their declared type:
-//   `property uchar x` crashes it (both found by the fuzz target).
-void check_header(const std::string& path, const std::string& ext)
+// PLY headers that CGAL 5.5's reader does not survive, refused first:
+// - it sizes its arrays from the header's counts: a header declaring billions of
+//   elements in a small file would exhaust memory before the reader notices the
+//   file is short. Every vertex takes at least 6 bytes ("0 0 0\n", or 12 in
+//   binary), every face at least 2;
+// - it adds a `property` to the last element without checking that there is
+//   one: a property before any `element` line crashes it; and it reads a vertex's
+//   x, y, z as float or double without checking their declared type: `property
+//   uchar x` crashes it (both found by the fuzz target).
+void check_ply_header(const std::string& path, std::uintmax_t bytes)
 {
-  if (ext != ".off" && ext != ".ply")
-    return;
-  std::error_code ec;
-  const auto bytes = fs::file_size(path, ec);
-  if (ec)
-    return;
   std::ifstream in(path, std::ios::binary);
-  std::string word;
   long double vertices = 0, faces = 0;
-  if (ext == ".off") {
-    in >> word;
-    if (word.find("OFF") == std::string::npos)
-      return;
-    while (in >> std::ws && in.peek() == '#')
-      std::getline(in, word);
-    long double v = 0, f = 0;
-    if (in >> v >> f) {
-      vertices = v;
-      faces = f;
+  std::string line, element;
+  bool element_seen = false;
+  for (int lines = 0; lines < 1000 && std::getline(in, line) && line.rfind("end_header", 0) != 0; ++lines) {
+    std::istringstream words(line);
+    std::string keyword, name;
+    long double n = 0;
+    words >> keyword;
+    if (keyword == "property") {
+      if (!element_seen)
+        fail("malformed file '" + path + "': a PLY property before any element");
+      std::string type;
+      words >> type >> name;
+      const bool coordinate = name == "x" || name == "y" || name == "z";
+      const bool floating = type == "float" || type == "double" || type == "float32" || type == "float64";
+      if ((element == "vertex" || element == "vertices") && coordinate && !floating)
+        fail("unsupported file '" + path + "': PLY vertex coordinate '" + name + "' of type '" + type +
+             "' (float or double expected)");
     }
-  } else {
-    std::string line, element;
-    bool element_seen = false;
-    for (int lines = 0; lines < 1000 && std::getline(in, line) && line.rfind("end_header", 0) != 0; ++lines) {
-      std::istringstream words(line);
-      std::string keyword, name;
-      long double n = 0;
-      words >> keyword;
-      if (keyword == "property") {
-        if (!element_seen)
-          fail("malformed file '" + path + "': a PLY property before any element");
-        std::string type;
-        words >> type >> name;
-        const bool coordinate = name == "x" || name == "y" || name == "z";
-        const bool floating = type == "float" || type == "double" || type == "float32" || type == "float64";
-        if ((element == "vertex" || element == "vertices") && coordinate && !floating)
-          fail("unsupported file '" + path + "': PLY vertex coordinate '" + name + "' of type '" + type +
-               "' (float or double expected)");
-      }
-      if (keyword == "element") {
-        element_seen = true;
-        if (words >> name >> n) {
-          element = name;
-          (name == "vertex" ? vertices : faces) += n;
-        }
+    if (keyword == "element") {
+      element_seen = true;
+      if (words >> name >> n) {
+        element = name;
+        (name == "vertex" ? vertices : faces) += n;
       }
     }
   }
@@ -275,39 +289,76 @@ void check_header(const std::string& path, const std::string& ext)
          std::to_string(bytes) + " bytes) can hold");
 }
 
-Soup read_input(const std::string& path)
+// The size of a readable regular file.
+std::uintmax_t check_readable(const std::string& path)
 {
-  const std::string ext = lower_extension(path);
-  if (ext == ".mesh")
-    fail("tetrahedral input (Medit .mesh) is not supported yet: '" + path + "'");
-  if (ext != ".off" && ext != ".ply" && ext != ".obj" && ext != ".stl")
-    fail("unknown input extension '" + ext + "' of '" + path + "' (expected .off, .ply, .obj or .stl)");
-
   std::error_code ec;
   if (!fs::exists(path, ec))
     fail("cannot read '" + path + "': no such file");
   if (!fs::is_regular_file(path, ec))
     fail("cannot read '" + path + "': not a regular file");
-  {
-    std::ifstream probe(path, std::ios::binary);
-    if (!probe)
-      fail("cannot read '" + path + "': cannot open the file");
-  }
+  const std::uintmax_t bytes = fs::file_size(path, ec);
+  std::ifstream probe(path, std::ios::binary);
+  if (ec || !probe)
+    fail("cannot read '" + path + "': cannot open the file");
+  return bytes;
+}
 
-  check_header(path, ext);
+std::string read_text_file(const std::string& path)
+{
+  check_readable(path);
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad())
+    fail("cannot read '" + path + "': read error");
+  return text.str();
+}
 
-  Soup soup;
-  bool ok = false;
+// Runs one of the strict readers of mesh_readers.h on the file's text.
+template <typename Reader>
+auto read_strictly(const std::string& path, Reader reader)
+{
+  const std::string text = read_text_file(path);
   try {
-    Silence_cerr silence;
-    ok = CGAL::IO::read_polygon_soup(path, soup.points, soup.polygons);
-  } catch (const std::bad_alloc&) {
-    fail("malformed file '" + path + "': its header asks for more memory than available");
-  } catch (const std::exception& e) {
+    return reader(text);
+  } catch (const ce_tool::Read_error& e) {
     fail("malformed file '" + path + "': " + e.what());
   }
-  if (!ok)
-    fail("malformed file '" + path + "': the " + ext.substr(1) + " reader failed (garbage, truncated, or invalid data)");
+}
+
+Soup read_input(const std::string& path)
+{
+  const std::string ext = lower_extension(path);
+  if (ext != ".off" && ext != ".ply" && ext != ".obj" && ext != ".stl")
+    fail("unknown input extension '" + ext + "' of '" + path + "' (expected .off, .ply, .obj, .stl or .mesh)");
+
+  Soup soup;
+  if (ext == ".off") {
+    const ce_tool::Polygon_soup_data data = read_strictly(path, [](const std::string& text) {
+      return ce_tool::read_off(text);
+    });
+    soup.points.reserve(data.points.size());
+    for (const auto& p : data.points)
+      soup.points.emplace_back(p[0], p[1], p[2]);
+    soup.polygons = data.faces;
+  } else {
+    const std::uintmax_t bytes = check_readable(path);
+    if (ext == ".ply")
+      check_ply_header(path, bytes);
+    bool ok = false;
+    try {
+      Silence_cerr silence;
+      ok = CGAL::IO::read_polygon_soup(path, soup.points, soup.polygons);
+    } catch (const std::bad_alloc&) {
+      fail("malformed file '" + path + "': its header asks for more memory than available");
+    } catch (const std::exception& e) {
+      fail("malformed file '" + path + "': " + e.what());
+    }
+    if (!ok)
+      fail("malformed file '" + path + "': the " + ext.substr(1) +
+           " reader failed (garbage, truncated, or invalid data)");
+  }
   if (soup.points.empty())
     fail("empty mesh '" + path + "': no vertices");
   if (soup.polygons.empty())
@@ -411,12 +462,53 @@ struct Row
   double k_max, k_min, mean, gaussian;
   std::array<double, 3> d_max, d_min;
   CE::Estimation_status status;
+
+  std::array<double, 10> values() const
+  {
+    return {k_max, k_min, mean, gaussian, d_max[0], d_max[1], d_max[2], d_min[0], d_min[1], d_min[2]};
+  }
 };
 
 Row failed_row()
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   return Row{nan, nan, nan, nan, {nan, nan, nan}, {nan, nan, nan}, CE::Estimation_status::not_estimable};
+}
+
+// Runs `estimate(tag)` with the concurrency tag --threads asks for, and turns
+// the library's exceptions into the tool's errors.
+template <typename Estimate>
+void run_with_threads(int threads, Estimate estimate)
+{
+  try {
+    if (threads == 1) {
+      estimate(CGAL::Sequential_tag());
+    } else {
+#ifdef CGAL_LINKED_WITH_TBB
+      std::unique_ptr<tbb::global_control> limit;
+      if (threads > 1)
+        limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                      std::size_t(threads));
+      estimate(CGAL::Parallel_tag());
+#else
+      estimate(CGAL::Sequential_tag());
+#endif
+    }
+  } catch (const std::invalid_argument& e) {
+    fail(std::string("invalid parameter: ") + e.what(), 2);
+  } catch (const std::bad_alloc&) {
+    fail("out of memory while estimating curvature");
+  } catch (const std::exception& e) {
+    fail(std::string("estimation failed: ") + e.what());
+  }
+}
+
+// --rings N: start on N rings, widen up to max(3, N), as for every method with rings.
+template <typename NamedParameters>
+auto with_rings(const Options& o, const NamedParameters& np)
+{
+  const int rings = o.rings.value_or(1);
+  return np.neighborhood_rings(rings).max_neighborhood_rings(std::max(3, rings));
 }
 
 template <typename Tag>
@@ -429,13 +521,16 @@ void run_estimator(const Options& o, const Mesh& mesh,
                     .vertex_Gaussian_curvature_map(K)
                     .vertex_principal_curvatures_and_directions_map(pcd)
                     .vertex_estimation_status_map(status);
-  const int rings = o.rings.value_or(1);
-  const auto ring_np = np.neighborhood_rings(rings).max_neighborhood_rings(std::max(3, rings));
+  const auto ring_np = with_rings(o, np);
   switch (o.method) {
     case Method::paraboloid: CE::paraboloid_fitting_curvatures<Tag>(mesh, ring_np); break;
     case Method::gauss_map: CE::gauss_map_curvatures<Tag>(mesh, ring_np); break;
     case Method::taubin: CE::taubin_curvatures<Tag>(mesh, ring_np); break;
     case Method::chen_schmitt: CE::chen_schmitt_curvatures<Tag>(mesh, ring_np); break;
+    case Method::jet:
+      CE::jet_fitting_curvatures<Tag>(mesh, ring_np.jet_degree(o.degree.value_or(2))
+                                              .monge_degree(o.monge_degree.value_or(2)));
+      break;
     case Method::curve_network:
       CE::curve_network_curvatures<Tag>(mesh, np.extrapolation_order(o.order.value_or(1)));
       break;
@@ -452,29 +547,8 @@ std::vector<Row> estimate(const Options& o, const Mesh& mesh_in, const std::vect
   auto status = mesh.add_property_map<V, CE::Estimation_status>("v:ce_status", CE::Estimation_status::not_estimable).first;
 
   const auto start = std::chrono::steady_clock::now();
-  if (!is_empty(mesh)) {
-    try {
-      if (o.threads == 1) {
-        run_estimator<CGAL::Sequential_tag>(o, mesh, H, K, pcd, status);
-      } else {
-#ifdef CGAL_LINKED_WITH_TBB
-        std::unique_ptr<tbb::global_control> limit;
-        if (o.threads > 1)
-          limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                        std::size_t(o.threads));
-        run_estimator<CGAL::Parallel_tag>(o, mesh, H, K, pcd, status);
-#else
-        run_estimator<CGAL::Sequential_tag>(o, mesh, H, K, pcd, status);
-#endif
-      }
-    } catch (const std::invalid_argument& e) {
-      fail(std::string("invalid parameter: ") + e.what(), 2);
-    } catch (const std::bad_alloc&) {
-      fail("out of memory while estimating curvature");
-    } catch (const std::exception& e) {
-      fail(std::string("estimation failed: ") + e.what());
-    }
-  }
+  if (!is_empty(mesh))
+    run_with_threads(o.threads, [&](auto tag) { run_estimator<decltype(tag)>(o, mesh, H, K, pcd, status); });
   seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   std::vector<Row> rows(file_to_mesh.size(), failed_row());
@@ -493,6 +567,99 @@ std::vector<Row> estimate(const Options& o, const Mesh& mesh_in, const std::vect
   mesh.remove_property_map(K);
   mesh.remove_property_map(pcd);
   mesh.remove_property_map(status);
+  return rows;
+}
+
+// ---------------------------------------------------------------------------
+// Tetrahedral input: the graph W = f(x, y, z) over a Medit .mesh, f from a .sol
+// ---------------------------------------------------------------------------
+
+using Tetrahedral_mesh = CE::Indexed_tetrahedral_mesh<Point>;
+
+struct Tetrahedral_input
+{
+  Tetrahedral_mesh mesh;
+  std::vector<double> scalars;  // f at the vertices
+};
+
+// The .sol beside the .mesh (same name, extension .sol) unless --scalars names one.
+std::string scalars_path(const std::string& mesh_path, const std::string& scalars)
+{
+  if (!scalars.empty()) {
+    if (lower_extension(scalars) != ".sol")
+      fail("--scalars '" + scalars + "' must be a Medit .sol file", 2);
+    return scalars;
+  }
+  const std::string beside = fs::path(mesh_path).replace_extension(".sol").string();
+  std::error_code ec;
+  if (!fs::exists(beside, ec))
+    fail("no scalar field for '" + mesh_path + "': '" + beside +
+         "' does not exist (name a Medit .sol with --scalars FILE.sol)");
+  return beside;
+}
+
+// The syntax and the combinatorics are the reader's; the geometry is checked here,
+// with CGAL's exact orientation predicate: a flat tetrahedron is an error, and each
+// tetrahedron is made positively oriented, which orients the hypersurface's normal
+// towards increasing f (see hypersurface_paraboloid_fitting_curvatures).
+Tetrahedral_input read_tetrahedral_input(const std::string& mesh_path, const std::string& scalars)
+{
+  const ce_tool::Tetrahedral_mesh_data data =
+    read_strictly(mesh_path, [](const std::string& text) { return ce_tool::read_medit_mesh(text); });
+  Tetrahedral_input input;
+  input.mesh.points.reserve(data.points.size());
+  for (const auto& p : data.points)
+    input.mesh.points.emplace_back(p[0], p[1], p[2]);
+  input.mesh.cells = data.cells;
+  for (std::size_t t = 0; t < input.mesh.cells.size(); ++t) {
+    auto& c = input.mesh.cells[t];
+    const auto& p = input.mesh.points;
+    switch (CGAL::orientation(p[c[0]], p[c[1]], p[c[2]], p[c[3]])) {
+      case CGAL::COPLANAR:
+        fail("degenerate file '" + mesh_path + "': tetrahedron " + std::to_string(t + 1) + " has zero volume");
+      case CGAL::NEGATIVE: std::swap(c[2], c[3]); break;
+      default: break;
+    }
+  }
+  const std::size_t vertices = data.points.size();
+  input.scalars = read_strictly(scalars_path(mesh_path, scalars), [vertices](const std::string& text) {
+    return ce_tool::read_medit_sol(text, vertices);
+  });
+  return input;
+}
+
+struct Tetrahedral_row
+{
+  double k_1, k_2, k_3, mean, gaussian;
+  CE::Estimation_status status;
+
+  std::array<double, 5> values() const { return {k_1, k_2, k_3, mean, gaussian}; }
+};
+
+std::vector<Tetrahedral_row> estimate_tetrahedral(const Options& o, const Tetrahedral_input& input, double& seconds)
+{
+  const std::size_t n = input.mesh.points.size();
+  std::vector<CE::Hypersurface_principal_curvatures_and_directions<std::array<double, 4>>> principal(n);
+  std::vector<double> H(n), K(n);
+  std::vector<CE::Estimation_status> status(n, CE::Estimation_status::not_estimable);
+  const auto points =
+    CE::make_graph_point_map(CE::Tetrahedral_complex_traits<Tetrahedral_mesh>::default_point_map(input.mesh),
+                             CGAL::make_property_map(input.scalars));
+  const auto np = with_rings(o, CE::parameters::vertex_point_map(points)
+                                  .vertex_principal_curvatures_and_directions_map(CGAL::make_property_map(principal))
+                                  .vertex_mean_curvature_map(CGAL::make_property_map(H))
+                                  .vertex_Gaussian_curvature_map(CGAL::make_property_map(K))
+                                  .vertex_estimation_status_map(CGAL::make_property_map(status)));
+  const auto start = std::chrono::steady_clock::now();
+  run_with_threads(o.threads, [&](auto tag) {
+    CE::hypersurface_paraboloid_fitting_curvatures<decltype(tag)>(input.mesh, np);
+  });
+  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  std::vector<Tetrahedral_row> rows(n);
+  for (std::size_t v = 0; v < n; ++v)
+    rows[v] = {principal[v].max_curvature, principal[v].mid_curvature, principal[v].min_curvature, H[v], K[v],
+               status[v]};
   return rows;
 }
 
@@ -522,13 +689,14 @@ double quantity(const Row& r, Quantity q)
   }
 }
 
-std::string csv_text(const std::vector<Row>& rows)
+// The header line, then a row per vertex: its values, then its status.
+template <typename Row_type>
+std::string csv_text(const char* header, const std::vector<Row_type>& rows)
 {
-  std::string out = "k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,status\n";
-  out.reserve(rows.size() * 160 + out.size());
-  for (const Row& r : rows) {
-    for (double x : {r.k_max, r.k_min, r.mean, r.gaussian, r.d_max[0], r.d_max[1], r.d_max[2],
-                     r.d_min[0], r.d_min[1], r.d_min[2]}) {
+  std::string out = std::string(header) + "\n";
+  out.reserve(rows.size() * 16 * (Row_type().values().size() + 1) + out.size());
+  for (const Row_type& r : rows) {
+    for (double x : r.values()) {
       put_double(out, x);
       out += ',';
     }
@@ -605,8 +773,9 @@ std::string ply_text(const Soup& soup, const std::vector<Row>& rows, Quantity q,
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const Point& p = soup.points[i];
     const Row& r = rows[i];
-    for (double x : {p.x(), p.y(), p.z(), r.k_max, r.k_min, r.mean, r.gaussian, r.d_max[0], r.d_max[1],
-                     r.d_max[2], r.d_min[0], r.d_min[1], r.d_min[2]})
+    for (double x : {p.x(), p.y(), p.z()})
+      put_binary(out, x);
+    for (double x : r.values())
       put_binary(out, x);
     out += static_cast<char>(r.status);
     for (unsigned char c : colour(quantity(r, q), scale))
@@ -673,22 +842,13 @@ const char* quantity_name(Quantity q)
   }
 }
 
-int run(int argc, char** argv)
+// The summary's lines after the input's: time, ranges of H and K, status counts.
+template <typename Row_type>
+void print_estimates(const std::vector<Row_type>& rows, std::size_t vertices, double seconds)
 {
-  const std::optional<Options> parsed = parse_arguments(argc, argv);
-  if (!parsed)
-    return 0;
-  const Options& o = *parsed;
-
-  const Soup soup = read_input(o.input);
-  std::vector<V> file_to_mesh;
-  const Mesh mesh = build_mesh(soup, file_to_mesh);
-  double seconds = 0;
-  const std::vector<Row> rows = estimate(o, mesh, file_to_mesh, seconds);
-
   std::size_t ok = 0, widened = 0, failed = 0;
   std::vector<double> H, K;
-  for (const Row& r : rows) {
+  for (const Row_type& r : rows) {
     switch (r.status) {
       case CE::Estimation_status::ok: ++ok; break;
       case CE::Estimation_status::widened: ++widened; break;
@@ -697,27 +857,62 @@ int run(int argc, char** argv)
     H.push_back(r.mean);
     K.push_back(r.gaussian);
   }
-
-  if (!o.output.empty()) {
-    const std::string text = lower_extension(o.output) == ".csv"
-                               ? csv_text(rows)
-                               : ply_text(soup, rows, o.color_by, quantity_name(o.color_by));
-    write_file_atomically(o.output, text);
-    return 0;
-  }
-
-  std::cout << "input: " << o.input << '\n'
-            << "vertices: " << soup.points.size() << " in the file (" << num_vertices(mesh) << " in the mesh, "
-            << num_faces(mesh) << " faces)\n"
-            << "method: " << o.method_name << '\n'
-            << "time: " << seconds * 1e3 << " ms";
-  if (num_vertices(mesh) > 0)
-    std::cout << " (" << seconds * 1e9 / double(num_vertices(mesh)) << " ns per vertex)";
+  std::cout << "time: " << seconds * 1e3 << " ms";
+  if (vertices > 0)
+    std::cout << " (" << seconds * 1e9 / double(vertices) << " ns per vertex)";
   std::cout << '\n';
   print_range("mean curvature H", H);
   print_range("Gaussian curvature K", K);
   std::cout << "ok: " << ok << ", widened: " << widened << ", failed (not estimable): " << failed << '\n';
+}
+
+int run_surface(const Options& o)
+{
+  const Soup soup = read_input(o.input);
+  std::vector<V> file_to_mesh;
+  const Mesh mesh = build_mesh(soup, file_to_mesh);
+  double seconds = 0;
+  const std::vector<Row> rows = estimate(o, mesh, file_to_mesh, seconds);
+
+  if (!o.output.empty()) {
+    const std::string text =
+      lower_extension(o.output) == ".csv"
+        ? csv_text("k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,status", rows)
+        : ply_text(soup, rows, o.color_by, quantity_name(o.color_by));
+    write_file_atomically(o.output, text);
+    return 0;
+  }
+  std::cout << "input: " << o.input << '\n'
+            << "vertices: " << soup.points.size() << " in the file (" << num_vertices(mesh) << " in the mesh, "
+            << num_faces(mesh) << " faces)\n"
+            << "method: " << o.method_name << '\n';
+  print_estimates(rows, num_vertices(mesh), seconds);
   return 0;
+}
+
+int run_tetrahedral(const Options& o)
+{
+  const Tetrahedral_input input = read_tetrahedral_input(o.input, o.scalars);
+  double seconds = 0;
+  const std::vector<Tetrahedral_row> rows = estimate_tetrahedral(o, input, seconds);
+  if (!o.output.empty()) {  // CSV: parse_arguments refuses PLY for tetrahedral input
+    write_file_atomically(o.output, csv_text("k_1,k_2,k_3,mean,gaussian,status", rows));
+    return 0;
+  }
+  std::cout << "input: " << o.input << '\n'
+            << "vertices: " << input.mesh.points.size() << '\n'
+            << "tetrahedra: " << input.mesh.cells.size() << '\n'
+            << "method: " << o.method_name << " (hypersurface of R^4)\n";
+  print_estimates(rows, input.mesh.points.size(), seconds);
+  return 0;
+}
+
+int run(int argc, char** argv)
+{
+  const std::optional<Options> parsed = parse_arguments(argc, argv);
+  if (!parsed)
+    return 0;
+  return lower_extension(parsed->input) == ".mesh" ? run_tetrahedral(*parsed) : run_surface(*parsed);
 }
 
 } // namespace
