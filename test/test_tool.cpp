@@ -433,6 +433,9 @@ TEST_F(ToolTest, TruncatedFiles)
                               "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
                               "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
   expect_rejected({file("uchar_coordinate.ply", uchar_x).string()}, "PLY coordinate of integer type");
+  // And a second line starting with end_header: CGAL reads it as the format line.
+  const std::string format_line = "ply\nend_header_ ascii 1.0\nproperty float y\nelement face 0\nend_header\n";
+  expect_rejected({file("end_header_format.ply", format_line).string()}, "PLY end_header on the format line");
 }
 
 TEST_F(ToolTest, IndicesOutOfRange)

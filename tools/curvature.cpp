@@ -254,17 +254,24 @@ struct Silence_cerr
 //   one: a property before any `element` line crashes it; and it reads a vertex's
 //   x, y, z as float or double without checking their declared type: `property
 //   uchar x` crashes it (both found by the fuzz target).
+// The header is scanned as CGAL's reader scans it: the first two lines are the
+// signature and the format, whatever they hold (a second line "end_header ascii
+// 1.0" does not end the header), then keyword lines up to the keyword end_header.
 void check_ply_header(const std::string& path, std::uintmax_t bytes)
 {
   std::ifstream in(path, std::ios::binary);
   long double vertices = 0, faces = 0;
   std::string line, element;
   bool element_seen = false;
-  for (int lines = 0; lines < 1000 && std::getline(in, line) && line.rfind("end_header", 0) != 0; ++lines) {
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (number <= 2)
+      continue;
     std::istringstream words(line);
     std::string keyword, name;
     long double n = 0;
     words >> keyword;
+    if (keyword == "end_header")
+      break;
     if (keyword == "property") {
       if (!element_seen)
         fail("malformed file '" + path + "': a PLY property before any element");
