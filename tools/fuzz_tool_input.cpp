@@ -1,9 +1,12 @@
-// libFuzzer target for the input path of the `curvature` tool: the bytes are a
-// mesh file (the first byte picks the extension: .off .ply .obj .stl); the tool's
-// reader, validation, soup repair and the paraboloid fit run on it. A Tool_error
-// is the expected outcome for bad input; anything else (crash, sanitizer report,
-// other exception, hang) is a finding.
+// libFuzzer target for the input path of the `curvature` tool: the bytes are an
+// input file, the first byte picks its format (.off .ply .obj .stl .mesh). For
+// .mesh, the bytes up to the first NUL are the .mesh and the bytes after it the
+// .sol beside it (no NUL: no .sol). The tool's reader, validation, soup repair and
+// the paraboloid fit (surface or hypersurface) run on it. A Tool_error is the
+// expected outcome for bad input; anything else (crash, sanitizer report, other
+// exception, hang) is a finding.
 //   cmake -DCMAKE_CXX_COMPILER=clang++ -DCE_BUILD_FUZZERS=ON ... && ./fuzz_tool_input -runs=N
+// scripts/run_fuzz.sh runs it briefly over tools/fuzz_seeds/ (one seed per format).
 #define CE_CURVATURE_NO_MAIN
 #include "curvature.cpp"
 
@@ -13,33 +16,70 @@
 #include <string>
 #include <unistd.h>
 
+namespace {
+
+void write_bytes(const std::string& path, const std::uint8_t* data, std::size_t size)
+{
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+}
+
+// Rows: one per vertex of the file; not estimable rows are NaN.
+template <typename Row_type>
+void check_rows(const std::vector<Row_type>& rows, std::size_t vertices)
+{
+  if (rows.size() != vertices)
+    __builtin_trap();
+  for (const Row_type& r : rows)
+    if (r.status == CE::Estimation_status::not_estimable && !std::isnan(r.mean))
+      __builtin_trap();
+}
+
+void run_surface_input(const std::string& path)
+{
+  Options o;
+  o.threads = 1;
+  const Soup soup = read_input(path);
+  std::vector<V> file_to_mesh;
+  Silence_cerr silence;  // repair notes
+  const Mesh mesh = build_mesh(soup, file_to_mesh);
+  double seconds = 0;
+  check_rows(estimate(o, mesh, file_to_mesh, seconds), soup.points.size());
+}
+
+void run_tetrahedral_input(const std::string& path)
+{
+  Options o;
+  o.threads = 1;
+  const Tetrahedral_input input = read_tetrahedral_input(path, "");
+  double seconds = 0;
+  check_rows(estimate_tetrahedral(o, input, seconds), input.mesh.points.size());
+}
+
+} // namespace
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
   if (size < 1 || size > 1 << 16)
     return 0;
-  static const char* const extensions[] = {".off", ".ply", ".obj", ".stl"};
-  const std::string path = "/tmp/ce_fuzz_tool_input_" + std::to_string(::getpid()) + extensions[data[0] % 4];
-  {
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(data + 1), static_cast<std::streamsize>(size - 1));
-  }
+  static const char* const extensions[] = {".off", ".ply", ".obj", ".stl", ".mesh"};
+  const bool tetrahedral = data[0] % 5 == 4;
+  const std::string base = "/tmp/ce_fuzz_tool_input_" + std::to_string(::getpid());
+  const std::string path = base + extensions[data[0] % 5];
+  const std::uint8_t* const first = data + 1;
+  const std::uint8_t* const last = data + size;
+  const std::uint8_t* const nul = tetrahedral ? std::find(first, last, std::uint8_t(0)) : last;
+  write_bytes(path, first, std::size_t(nul - first));
+  if (nul != last)
+    write_bytes(base + ".sol", nul + 1, std::size_t(last - nul - 1));
   try {
-    Options o;
-    o.input = path;
-    o.threads = 1;
-    const Soup soup = read_input(path);
-    std::vector<V> file_to_mesh;
-    Silence_cerr silence;  // repair notes
-    const Mesh mesh = build_mesh(soup, file_to_mesh);
-    double seconds = 0;
-    const std::vector<Row> rows = estimate(o, mesh, file_to_mesh, seconds);
-    if (rows.size() != soup.points.size())
-      __builtin_trap();
-    for (const Row& r : rows)
-      if (r.status == CE::Estimation_status::not_estimable && !std::isnan(r.mean))
-        __builtin_trap();
+    if (tetrahedral)
+      run_tetrahedral_input(path);
+    else
+      run_surface_input(path);
   } catch (const Tool_error&) {
   }
   std::remove(path.c_str());
+  std::remove((base + ".sol").c_str());
   return 0;
 }
