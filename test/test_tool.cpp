@@ -433,9 +433,18 @@ TEST_F(ToolTest, TruncatedFiles)
                               "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
                               "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
   expect_rejected({file("uchar_coordinate.ply", uchar_x).string()}, "PLY coordinate of integer type");
+  const std::string list_y = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty list uchar float y\n"
+                             "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                             "0 1 0 0\n1 1 0 0\n0 1 1 0\n3 0 1 2\n";
+  expect_rejected({file("list_coordinate.ply", list_y).string()}, "PLY coordinate of list type");
   // And a second line starting with end_header: CGAL reads it as the format line.
   const std::string format_line = "ply\nend_header_ ascii 1.0\nproperty float y\nelement face 0\nend_header\n";
   expect_rejected({file("end_header_format.ply", format_line).string()}, "PLY end_header on the format line");
+  // A list count of a signed or 32-bit type: CGAL resizes the list to it, cast to size_t.
+  const std::string int_count = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                "property float z\nelement face 1\nproperty list int int vertex_indices\nend_header\n"
+                                "0 0 0\n1 0 0\n0 1 0\n-1 0 1 2\n";
+  expect_rejected({file("int_list_count.ply", int_count).string()}, "PLY list count of type int");
 }
 
 TEST_F(ToolTest, IndicesOutOfRange)

@@ -117,6 +117,7 @@ struct Options
   std::optional<int> order;
   std::optional<int> degree, monge_degree;
   std::string scalars;
+  bool tetrahedral = false;  // INPUT is a Medit .mesh
   int threads = 0;
   Quantity color_by = Quantity::mean;
 };
@@ -208,7 +209,8 @@ std::optional<Options> parse_arguments(int argc, char** argv)
   if (o.monge_degree && *o.monge_degree > o.degree.value_or(2))
     fail("--monge-degree " + std::to_string(*o.monge_degree) + " exceeds the jet degree " +
            std::to_string(o.degree.value_or(2)) + " (see --degree)", 2);
-  if (lower_extension(o.input) == ".mesh") {
+  o.tetrahedral = lower_extension(o.input) == ".mesh";
+  if (o.tetrahedral) {
     if (o.method != Method::paraboloid)
       fail("method '" + o.method_name + "' does not apply to tetrahedral input (.mesh): use paraboloid", 2);
     if (!o.output.empty() && lower_extension(o.output) == ".ply")
@@ -253,7 +255,10 @@ struct Silence_cerr
 // - it adds a `property` to the last element without checking that there is
 //   one: a property before any `element` line crashes it; and it reads a vertex's
 //   x, y, z as float or double without checking their declared type: `property
-//   uchar x` crashes it (both found by the fuzz target).
+//   uchar x` or `property list uchar float x` crashes it (found by the fuzz target);
+// - it resizes a list to the count it reads, cast to size_t: a count of type
+//   char, short or int can be -1 (a list of 2^64 - 1 items), of type uint
+//   4 billion (a list of 16 GB). uchar and ushort counts are bounded and enough.
 // The header is scanned as CGAL's reader scans it: the first two lines are the
 // signature and the format, whatever they hold (a second line "end_header ascii
 // 1.0" does not end the header), then keyword lines up to the keyword end_header.
@@ -275,8 +280,15 @@ void check_ply_header(const std::string& path, std::uintmax_t bytes)
     if (keyword == "property") {
       if (!element_seen)
         fail("malformed file '" + path + "': a PLY property before any element");
-      std::string type;
-      words >> type >> name;
+      std::string type, count_type, item_type;
+      words >> type;
+      if (type == "list") {
+        words >> count_type >> item_type;
+        if (count_type != "uchar" && count_type != "uint8" && count_type != "ushort" && count_type != "uint16")
+          fail("unsupported file '" + path + "': PLY list with a count of type '" + count_type +
+               "' (uchar or ushort expected)");
+      }
+      words >> name;
       const bool coordinate = name == "x" || name == "y" || name == "z";
       const bool floating = type == "float" || type == "double" || type == "float32" || type == "float64";
       if ((element == "vertex" || element == "vertices") && coordinate && !floating)
@@ -919,7 +931,7 @@ int run(int argc, char** argv)
   const std::optional<Options> parsed = parse_arguments(argc, argv);
   if (!parsed)
     return 0;
-  return lower_extension(parsed->input) == ".mesh" ? run_tetrahedral(*parsed) : run_surface(*parsed);
+  return parsed->tetrahedral ? run_tetrahedral(*parsed) : run_surface(*parsed);
 }
 
 } // namespace
