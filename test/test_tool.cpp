@@ -437,6 +437,11 @@ TEST_F(ToolTest, TruncatedFiles)
                              "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
                              "0 1 0 0\n1 1 0 0\n0 1 1 0\n3 0 1 2\n";
   expect_rejected({file("list_coordinate.ply", list_y).string()}, "PLY coordinate of list type");
+  // Found by the fuzz target: a negative count (read as size_t: 2^64 - 4 items, a
+  // reader that never ends), made to look small by a positive one of another element.
+  const std::string negative = "ply\nformat ascii 1.0\nelement other -4\nelement vertex 4\nproperty float x\n"
+                               "property float y\nproperty float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  expect_rejected({file("negative_count.ply", negative).string()}, "PLY negative element count");
   // And a second line starting with end_header: CGAL reads it as the format line.
   const std::string format_line = "ply\nend_header_ ascii 1.0\nproperty float y\nelement face 0\nend_header\n";
   expect_rejected({file("end_header_format.ply", format_line).string()}, "PLY end_header on the format line");

@@ -298,12 +298,15 @@ void check_ply_header(const std::string& path, std::uintmax_t bytes)
     if (keyword == "element") {
       element_seen = true;
       if (words >> name >> n) {
+        // CGAL reads the count as size_t: -4 is 2^64 - 4 items, a loop without end.
+        if (n < 0)
+          fail("malformed file '" + path + "': PLY element '" + name + "' with a negative count");
         element = name;
         (name == "vertex" ? vertices : faces) += n;
       }
     }
   }
-  if (vertices < 0 || faces < 0 || 6 * vertices + 2 * faces > static_cast<long double>(bytes) + 64)
+  if (6 * vertices + 2 * faces > static_cast<long double>(bytes) + 64)
     fail("malformed file '" + path + "': its header declares more vertices or faces than the file (" +
          std::to_string(bytes) + " bytes) can hold");
 }
