@@ -442,6 +442,9 @@ TEST_F(ToolTest, TruncatedFiles)
   const std::string negative = "ply\nformat ascii 1.0\nelement other -4\nelement vertex 4\nproperty float x\n"
                                "property float y\nproperty float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
   expect_rejected({file("negative_count.ply", negative).string()}, "PLY negative element count");
+  // And a count with trailing letters, which CGAL reads as its leading digits.
+  const std::string trailing = "ply\nformat ascii 1.0\nelement vertex 419999999999999999et\nend_header\n";
+  expect_rejected({file("count_with_letters.ply", trailing).string()}, "PLY count with trailing letters");
   // And a second line starting with end_header: CGAL reads it as the format line.
   const std::string format_line = "ply\nend_header_ ascii 1.0\nproperty float y\nelement face 0\nend_header\n";
   expect_rejected({file("end_header_format.ply", format_line).string()}, "PLY end_header on the format line");

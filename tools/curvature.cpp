@@ -275,8 +275,7 @@ void check_ply_header(const std::string& path, std::uintmax_t bytes)
     if (number <= 2)
       continue;
     std::istringstream words(line);
-    std::string keyword, name;
-    long double n = 0;
+    std::string keyword, name, count;
     words >> keyword;
     if (keyword == "end_header")
       break;
@@ -300,12 +299,17 @@ void check_ply_header(const std::string& path, std::uintmax_t bytes)
     }
     if (keyword == "element") {
       element_seen = true;
-      if (words >> name >> n) {
-        // CGAL reads the count as size_t: -4 is 2^64 - 4 items, a loop without end.
-        if (n < 0)
+      if (words >> name >> count) {
+        // CGAL reads the count with >> into a size_t: its leading digits ("41et" is
+        // 41), and a '-' wraps around (-4 is 2^64 - 4 items, a loop without end).
+        if (count[0] == '-')
           fail("malformed file '" + path + "': PLY element '" + name + "' with a negative count");
+        unsigned long long n = 0;
+        const char* digits = count.data() + (count[0] == '+');
+        if (std::from_chars(digits, count.data() + count.size(), n).ec == std::errc::result_out_of_range)
+          n = std::numeric_limits<unsigned long long>::max();
         element = name;
-        (name == "vertex" ? vertices : faces) += n;
+        (name == "vertex" ? vertices : faces) += static_cast<long double>(n);
       }
     }
   }
