@@ -35,13 +35,16 @@ public:
     ring_ends_.push_back(1);
     center_on_border_ = false;
     has_face_.clear();
+    faces_are_triangles_ = true;
     std::size_t incoming_count = 0;
     const halfedge_descriptor h = halfedge(center, g);
     if (h != boost::graph_traits<FaceGraph>::null_halfedge())
       for (halfedge_descriptor incoming : halfedges_around_target(h, g)) {
         add_if_new(source(incoming, g));
-        has_face_.push_back(!is_border(incoming, g));
-        center_on_border_ = center_on_border_ || is_border(incoming, g) || is_border(opposite(incoming, g), g);
+        const bool face = !is_border(incoming, g);
+        has_face_.push_back(face);
+        faces_are_triangles_ = faces_are_triangles_ && (!face || next(next(next(incoming, g), g), g) == incoming);
+        center_on_border_ = center_on_border_ || !face || is_border(opposite(incoming, g), g);
         ++incoming_count;
       }
     ring_ends_.push_back(vertices_.size());
@@ -53,6 +56,9 @@ public:
   // h_k, where it exists, has the corner (source(h_k), center, source(h_{k+1})).
   bool one_ring_in_fan_order() const { return one_ring_in_fan_order_; }
   bool has_face(std::size_t k) const { return has_face_[k] != 0; }
+  // Whether every face around the center is a triangle: then the corner normals
+  // at the center are the faces' area-weighted normals.
+  bool faces_are_triangles() const { return faces_are_triangles_; }
 
   // Whether the center has an incident border edge (found while gathering the 1-ring).
   bool center_on_border() const { return center_on_border_; }
@@ -97,6 +103,7 @@ private:
   std::vector<char> has_face_;  // per incoming halfedge of the center
   bool center_on_border_ = false;
   bool one_ring_in_fan_order_ = false;
+  bool faces_are_triangles_ = false;
 };
 
 // k-rings over the neighbours of Tetrahedral_complex_stars, one ring at a time.

@@ -12,10 +12,10 @@
 //                                           the k-rings of v, grown one ring at a time
 //   center_on_border(v)                     after start(v)
 //   platelet_for_normal(method)             whether initial_normal needs the gathered 1-ring
-//   initial_normal(v, method, offsets, finite, scale)
-//                                           the first-order normal (any length); offsets
-//                                           are the gathered 1-ring relative to v, over
-//                                           scale, finite[i] whether offsets[i] is
+//   initial_normal(v, method, gathered, offsets, finite, scale)
+//                                           the first-order normal (any length); where
+//                                           gathered, offsets are the 1-ring relative to v,
+//                                           over scale, finite[i] whether offsets[i] is
 //   restart_from_hyperplane                 see estimate_normal
 //   estimate(status, curvature, scale)      the result from the curvature in the fit's frame
 // Models: Face_graph_platelet (here) and Tetrahedral_platelet (tetrahedral_platelet_fit.h).
@@ -82,7 +82,7 @@ Platelet_fit_settings platelet_fit_settings(const NamedParameters& np, const cha
 // vertex of a grid has only three rows of samples, too few for cubic terms in
 // the normal direction), Gaussian weights of width the mean 1-ring edge
 // (the quartic remainder, largest at the far samples, otherwise leaks into the
-// gradient through a one-sided stencil), and a condition threshold 100 times
+// gradient through a one-sided stencil), and a condition threshold 1000 times
 // the quadratic one (well-posed cubic stencils show about 1e4, the ones that
 // are singular in the tangent plane above 1e16).
 constexpr int cubic_normal_min_rings = 3;
@@ -172,7 +172,7 @@ public:
   Estimate fit(Vertex v, Vertex_normal_method method)
   {
     Vector normal;
-    if (!gather(v) || !estimate_normal(v, method, normal))
+    if (!gather(v) || !estimate_normal(v, method, true, normal))
       return Estimate();
     return fit_curvature(normal);
   }
@@ -180,9 +180,10 @@ public:
   // The unit normal by `method`; false where there is none.
   bool normal(Vertex v, Vertex_normal_method method, Vector& normal)
   {
-    if (neighborhood_.platelet_for_normal(method) && !gather(v))
+    const bool gathered = neighborhood_.platelet_for_normal(method);
+    if (gathered && !gather(v))
       return false;
-    return estimate_normal(v, method, normal);
+    return estimate_normal(v, method, gathered, normal);
   }
 
 private:
@@ -270,10 +271,10 @@ private:
 
   // The neighbourhood's first-order normal, or for quadric_fit a normal of second
   // order or better: that normal corrected by the gradient of a Taylor fit in its
-  // frame (see fit_normal).
-  bool estimate_normal(Vertex v, Vertex_normal_method method, Vector& normal)
+  // frame (see fit_normal). `gathered`: whether gather(v) has succeeded.
+  bool estimate_normal(Vertex v, Vertex_normal_method method, bool gathered, Vector& normal)
   {
-    normal = neighborhood_.initial_normal(v, method, offsets_, finite_, scale_);
+    normal = neighborhood_.initial_normal(v, method, gathered, offsets_, finite_, scale_);
     if (!all_finite(normal) || !(normal.squaredNorm() > 0))
       return false;
     normal.normalize();
@@ -383,12 +384,16 @@ public:
   // Face averages need no neighbourhood.
   static bool platelet_for_normal(Vertex_normal_method method) { return method == Vertex_normal_method::quadric_fit; }
 
-  // The area-weighted normal, from the gathered 1-ring, for quadric_fit; else the face average by `method`.
-  Eigen::Vector3d initial_normal(Vertex v, Vertex_normal_method method, const std::vector<Eigen::Vector3d>& offsets,
-                                 const std::vector<char>& finite, double) const
+  // The area-weighted normal from the gathered 1-ring for quadric_fit, and for
+  // area_weighted where the 1-ring is gathered and its faces are triangles (the same
+  // normal, without walking the faces again); else the face average by `method`.
+  Eigen::Vector3d initial_normal(Vertex v, Vertex_normal_method method, bool gathered,
+                                 const std::vector<Eigen::Vector3d>& offsets, const std::vector<char>& finite,
+                                 double) const
   {
-    return method == Vertex_normal_method::quadric_fit ? corner_normal_sum(v, offsets, finite)
-                                                       : face_average_normal(v, *g_, vpm_, method);
+    const bool from_ring = method == Vertex_normal_method::quadric_fit ||
+                           (gathered && method == Vertex_normal_method::area_weighted && rings_.faces_are_triangles());
+    return from_ring ? corner_normal_sum(v, offsets, finite) : face_average_normal(v, *g_, vpm_, method);
   }
 
   static Surface_estimate estimate(Estimation_status status, const Graph_curvature<3>& curvature, double scale)

@@ -76,7 +76,7 @@ public:
   // The sum over the incident cells (a, b, c, d) of cross_product_4(b - a, c - a, d - a),
   // in coordinates relative to the center scaled by `scale`: the 3-volume-weighted
   // mean of the cells' normals, first order.
-  Eigen::Vector4d initial_normal(Vertex v, Vertex_normal_method, const std::vector<Eigen::Vector4d>&,
+  Eigen::Vector4d initial_normal(Vertex v, Vertex_normal_method, bool, const std::vector<Eigen::Vector4d>&,
                                  const std::vector<char>&, double scale) const
   {
     const Eigen::Vector4d& center = point(v);
