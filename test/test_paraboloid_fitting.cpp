@@ -6,6 +6,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Dynamic_property_map.h>
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 
 #include <boost/property_map/property_map.hpp>
@@ -20,6 +21,7 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -296,6 +298,35 @@ TEST(Paraboloid_fitting, SequentialAndParallelAreIdentical)
     // Bitwise: the same arithmetic per vertex, whatever the thread.
     ASSERT_EQ(std::memcmp(&sequential.principal[i], &parallel.principal[i], sizeof(Curvatures)), 0) << i;
   }
+}
+
+// Surface_mesh's maps are written from the worker threads; maps that insert on
+// access must stay on the calling thread.
+TEST(Paraboloid_fitting, OnlyMapsWithSlotsPerIndexAreWrittenFromWorkerThreads)
+{
+  using CGAL::Curvature_estimation::internal::accessible_concurrently;
+  using Polyhedron_vertex = boost::graph_traits<Polyhedron>::vertex_descriptor;
+  EXPECT_TRUE((accessible_concurrently<Mesh::Property_map<Mesh::Vertex_index, double>>()));
+  EXPECT_TRUE((accessible_concurrently<Mesh::Property_map<Mesh::Vertex_index, Curvatures>>()));
+  EXPECT_FALSE((accessible_concurrently<Mesh::Property_map<Mesh::Vertex_index, bool>>()));  // packed bits
+  EXPECT_FALSE((accessible_concurrently<boost::associative_property_map<std::map<Polyhedron_vertex, double>>>()));
+  EXPECT_FALSE((accessible_concurrently<
+                decltype(get(CGAL::dynamic_vertex_property_t<double>(), std::declval<Polyhedron&>()))>()));
+}
+
+TEST(Paraboloid_fitting, ParallelOnAPolyhedronWithAssociativeMapsMatchesSequential)
+{
+  const ce_test::Soup soup = ce_test::jittered_grid_graph_soup(ce_test::hamann_table1_functions()[8], 190, -1, 1, 0.2, 5);
+  const Polyhedron polyhedron = ce_test::to_mesh<Polyhedron>(soup);
+  using Vertex = boost::graph_traits<Polyhedron>::vertex_descriptor;
+  std::map<Vertex, double> sequential, parallel;  // std::map inserts on access: not thread-safe
+  CE::paraboloid_fitting_curvatures(polyhedron,
+                                    params::vertex_mean_curvature_map(boost::make_assoc_property_map(sequential)));
+  CE::paraboloid_fitting_curvatures<CGAL::Parallel_tag>(
+    polyhedron, params::vertex_mean_curvature_map(boost::make_assoc_property_map(parallel)));
+  ASSERT_EQ(parallel.size(), soup.points.size());
+  for (const auto& [v, h] : sequential)
+    ASSERT_EQ(parallel.at(v), h);
 }
 #endif
 

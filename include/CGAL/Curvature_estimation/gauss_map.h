@@ -71,7 +71,8 @@ namespace Curvature_estimation {
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` (default), `CGAL::Parallel_tag` or
 ///         `CGAL::Parallel_if_available_tag`. Sequential and parallel runs give
 ///         identical results. In parallel the vertex point map is read from several
-///         threads; every other map is read and written by the calling thread only.
+///         threads; the property maps of `Surface_mesh` (and `Point_set_3`) are read and
+///         written by the worker threads, every other map by the calling thread only.
 /// \tparam FaceGraph a model of `FaceGraph` (faces may be any polygons).
 /// \tparam NamedParameters a sequence of named parameters, built with the functions of `CGAL::Curvature_estimation::parameters`
 ///
@@ -210,7 +211,7 @@ void gauss_map_curvatures(const FaceGraph& g, const NamedParameters& np = parame
       bool load(vertex_descriptor) const { return true; }
       internal::Surface_estimate compute(vertex_descriptor v, bool) { return estimator.estimate(v); }
     };
-    internal::for_each_vertex<ConcurrencyTag>(
+    internal::for_each_vertex<ConcurrencyTag, internal::surface_maps_accessible_concurrently<NamedParameters>()>(
       vertices(g), Worker{internal::Gauss_map_estimator<FaceGraph, VPM>(g, vpm, normals)},
       [&](vertex_descriptor v, const internal::Surface_estimate& e) { internal::put_surface_estimate<GT>(np, v, e); });
   }

@@ -121,7 +121,10 @@ private:
 /// curvature 1/r). Vertices with no well-conditioned fit are not estimable (NaN).
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` (default), `CGAL::Parallel_tag` or
-///         `CGAL::Parallel_if_available_tag`
+///         `CGAL::Parallel_if_available_tag`. Sequential and parallel runs give
+///         identical results. In parallel the vertex point map is read from several
+///         threads; the property maps of `Surface_mesh` (and `Point_set_3`) are read and
+///         written by the worker threads, every other map by the calling thread only.
 /// \tparam FaceGraph a model of `FaceGraph`
 /// \tparam NamedParameters a sequence of named parameters, built with the functions of
 ///         `CGAL::Curvature_estimation::parameters`
@@ -218,7 +221,7 @@ void jet_fitting_curvatures(const FaceGraph& g, const NamedParameters& np = para
       bool load(vertex_descriptor) const { return true; }
       internal::Surface_estimate compute(vertex_descriptor v, bool) { return fitter.estimate(v); }
     };
-    internal::for_each_vertex<ConcurrencyTag>(
+    internal::for_each_vertex<ConcurrencyTag, internal::surface_maps_accessible_concurrently<NamedParameters>()>(
       vertices(g), Worker{internal::Jet_fitter<FaceGraph, VPM>(g, vpm, jet_degree, monge_degree, rings, max_rings, max_condition)},
       [&](vertex_descriptor v, const internal::Surface_estimate& e) { internal::put_surface_estimate<GT>(np, v, e); });
   }

@@ -59,7 +59,8 @@ namespace Curvature_estimation {
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` (default), `CGAL::Parallel_tag` or
 ///         `CGAL::Parallel_if_available_tag`. Sequential and parallel runs give
 ///         identical results. In parallel the vertex point map is read from several
-///         threads; every other map is read and written by the calling thread only.
+///         threads; the property maps of `Surface_mesh` (and `Point_set_3`) are read and
+///         written by the worker threads, every other map by the calling thread only.
 /// \tparam FaceGraph a model of `FaceGraph` (faces may be any polygons).
 /// \tparam NamedParameters a sequence of named parameters, built with the functions of `CGAL::Curvature_estimation::parameters`
 ///
@@ -179,7 +180,7 @@ void paraboloid_fitting_curvatures(const FaceGraph& g,
 
     const Worker worker{internal::Platelet_fitter<FaceGraph, VPM>(g, vpm, settings), normal_method, normals};
 
-    internal::for_each_vertex<ConcurrencyTag>(vertices(g), worker,
+    internal::for_each_vertex<ConcurrencyTag, internal::surface_maps_accessible_concurrently<NamedParameters>()>(vertices(g), worker,
       [&](vertex_descriptor v, const internal::Surface_estimate& e) { internal::put_surface_estimate<GT>(np, v, e); });
   }
 }

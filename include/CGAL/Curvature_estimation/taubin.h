@@ -59,7 +59,8 @@ enum class Neighbor_weighting : unsigned char
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` (default), `CGAL::Parallel_tag` or
 ///         `CGAL::Parallel_if_available_tag`. Sequential and parallel runs give
 ///         identical results. In parallel the vertex point map is read from several
-///         threads; every other map is read and written by the calling thread only.
+///         threads; the property maps of `Surface_mesh` (and `Point_set_3`) are read and
+///         written by the worker threads, every other map by the calling thread only.
 /// \tparam FaceGraph a model of `FaceGraph` (faces may be any polygons).
 /// \tparam NamedParameters a sequence of named parameters, built with the functions of `CGAL::Curvature_estimation::parameters`
 ///

@@ -2,6 +2,7 @@
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_FOR_EACH_VERTEX_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_FOR_EACH_VERTEX_H
 
+#include <CGAL/Surface_mesh/Properties.h>
 #include <CGAL/assertions.h>
 #include <CGAL/tags.h>
 
@@ -20,16 +21,40 @@ namespace CGAL {
 namespace Curvature_estimation {
 namespace internal {
 
+// Whether `get` and `put` on distinct keys of a property map may run on several
+// threads at once. Known to be so only for the property maps of Surface_mesh and
+// Point_set_3, which read and write a vector slot per index (except for bool,
+// whose vector packs bits). Other maps, even lvalue ones, may insert on access
+// (boost::associative_property_map, CGAL's dynamic maps of Polyhedron_3).
+template <typename Map, typename = void>
+struct Accessible_concurrently : std::false_type
+{};
+
+template <typename Map>
+struct Accessible_concurrently<
+  Map, std::enable_if_t<std::is_base_of<CGAL::Properties::Property_map_base<typename Map::key_type,
+                                                                             typename Map::value_type, Map>,
+                                        Map>::value>>
+  : std::bool_constant<!std::is_same<typename Map::value_type, bool>::value>
+{};
+
+template <typename Map>
+constexpr bool accessible_concurrently()
+{
+  return Accessible_concurrently<std::remove_cv_t<std::remove_reference_t<Map>>>::value;
+}
+
 // A Worker is copyable (one copy per thread holds that thread's buffers) and has
 //   Input  load(vertex) const           reads the user's input maps,
 //   Result compute(vertex, const Input&) the estimate, touching no property map
 //                                        but the vertex point map.
 // store(vertex, result) writes the user's output maps.
-// load and store always run on the calling thread: property maps such as the
-// dynamic ones of Polyhedron_3 insert on `get` and are not thread-safe. In
+// load and store run on the calling thread unless `concurrent_maps` says that
+// every map they touch is accessible_concurrently (below): property maps such as
+// the dynamic ones of Polyhedron_3 insert on `get` and are not thread-safe. In
 // parallel, vertices go in blocks of fixed size, so the extra memory is
 // O(block + threads x neighbourhood), not O(#vertices).
-template <typename ConcurrencyTag, typename VertexRange, typename Worker, typename Store>
+template <typename ConcurrencyTag, bool concurrent_maps = false, typename VertexRange, typename Worker, typename Store>
 void for_each_vertex(const VertexRange& vertices, const Worker& worker, Store store)
 {
 #ifndef CGAL_LINKED_WITH_TBB
@@ -44,29 +69,43 @@ void for_each_vertex(const VertexRange& vertices, const Worker& worker, Store st
 
     tbb::enumerable_thread_specific<Worker> workers(worker);
     std::vector<Vertex> block;
-    std::vector<Input> inputs;
-    std::vector<Result> results;
     block.reserve(block_size);
-    inputs.reserve(block_size);
-
-    auto it = std::begin(vertices);
-    const auto end = std::end(vertices);
-    while (it != end) {
-      block.clear();
-      inputs.clear();
-      for (; it != end && block.size() < block_size; ++it) {
-        block.push_back(*it);
-        inputs.push_back(worker.load(*it));
-      }
-      results.resize(block.size());
+    // body(worker, i) for every i of the block, on the worker threads.
+    auto for_block = [&](auto body) {
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, block.size(), 512),
                         [&](const tbb::blocked_range<std::size_t>& range) {
                           Worker& local = workers.local();
                           for (std::size_t i = range.begin(); i != range.end(); ++i)
-                            results[i] = local.compute(block[i], inputs[i]);
+                            body(local, i);
                         });
-      for (std::size_t i = 0; i < block.size(); ++i)
-        store(block[i], results[i]);
+    };
+
+    auto it = std::begin(vertices);
+    const auto end = std::end(vertices);
+    if constexpr (concurrent_maps) {
+      // All on the worker threads: the calling thread only lists the block.
+      while (it != end) {
+        block.clear();
+        for (; it != end && block.size() < block_size; ++it)
+          block.push_back(*it);
+        for_block([&](Worker& local, std::size_t i) { store(block[i], local.compute(block[i], local.load(block[i]))); });
+      }
+    } else {
+      std::vector<Input> inputs;
+      std::vector<Result> results;
+      inputs.reserve(block_size);
+      while (it != end) {
+        block.clear();
+        inputs.clear();
+        for (; it != end && block.size() < block_size; ++it) {
+          block.push_back(*it);
+          inputs.push_back(worker.load(*it));
+        }
+        results.resize(block.size());
+        for_block([&](Worker& local, std::size_t i) { results[i] = local.compute(block[i], inputs[i]); });
+        for (std::size_t i = 0; i < block.size(); ++i)
+          store(block[i], results[i]);
+      }
     }
     return;
   }

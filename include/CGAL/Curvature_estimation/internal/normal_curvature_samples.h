@@ -212,7 +212,7 @@ void normal_curvature_sample_curvatures(const FaceGraph& g, const NamedParameter
 
     const Worker worker{Platelet_fitter<FaceGraph, VPM>(g, vpm, settings), Normal_curvature_sampler<FaceGraph, VPM>(g, vpm),
                         method, normals, solve, {}};
-    for_each_vertex<ConcurrencyTag>(vertices(g), worker, [&](vertex_descriptor v, const Surface_estimate& e) {
+    for_each_vertex<ConcurrencyTag, surface_maps_accessible_concurrently<NamedParameters>()>(vertices(g), worker, [&](vertex_descriptor v, const Surface_estimate& e) {
       put_surface_estimate<GT>(np, v, e);
     });
   }

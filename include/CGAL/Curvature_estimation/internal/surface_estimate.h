@@ -5,6 +5,7 @@
 
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/parameters.h>
+#include <CGAL/Curvature_estimation/internal/for_each_vertex.h>
 
 #include <CGAL/number_utils.h>
 
@@ -52,6 +53,29 @@ constexpr bool wants_curvature_output()
   return has_vertex_principal_curvatures_and_directions_map<NamedParameters>() ||
          has_vertex_mean_curvature_map<NamedParameters>() || has_vertex_Gaussian_curvature_map<NamedParameters>() ||
          has_parameter<NamedParameters, internal_np::vertex_estimation_status_map_t>();
+}
+
+// Whether the maps of a named-parameter pack of type NP that a surface
+// estimator's load and store touch (the outputs, and a given vertex normal map)
+// may all be accessed from the worker threads (see for_each_vertex).
+template <typename NP>
+constexpr bool surface_maps_accessible_concurrently()
+{
+  using ::CGAL::parameters::get_parameter;
+  const NP* np = nullptr;  // dereferenced in decltype only
+  bool all = true;
+  if constexpr (has_vertex_principal_curvatures_and_directions_map<NP>())
+    all = all && accessible_concurrently<decltype(get_vertex_principal_curvatures_and_directions_map(*np))>();
+  if constexpr (has_vertex_mean_curvature_map<NP>())
+    all = all && accessible_concurrently<decltype(get_vertex_mean_curvature_map(*np))>();
+  if constexpr (has_vertex_Gaussian_curvature_map<NP>())
+    all = all && accessible_concurrently<decltype(get_vertex_Gaussian_curvature_map(*np))>();
+  if constexpr (has_parameter<NP, internal_np::vertex_estimation_status_map_t>())
+    all = all && accessible_concurrently<decltype(get_parameter(*np, internal_np::vertex_estimation_status_map))>();
+  if constexpr (has_parameter<NP, ::CGAL::internal_np::vertex_normal_map_t>())
+    all = all && accessible_concurrently<decltype(get_parameter(*np, ::CGAL::internal_np::vertex_normal_map))>();
+  (void)np;
+  return all;
 }
 
 // Writes the outputs that `np` asks for, and only those.
