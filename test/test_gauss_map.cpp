@@ -10,6 +10,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 
 #include <gtest/gtest.h>
 
@@ -23,6 +24,7 @@
 #include <cstring>
 #include <limits>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -565,6 +567,42 @@ TEST(Gauss_map, IsolatedAndNaNVerticesAreNotEstimableWithoutHarmingNeighbours)
                                                  mesh.add_property_map<vertex_descriptor, double>("v:h").first)
                                                  .neighborhood_rings(0)),
                std::invalid_argument);
+}
+
+// A Surface_mesh with removed vertices not yet collected has live vertices whose
+// indices reach beyond num_vertices: the per-vertex normal table must cover them.
+TEST(Gauss_map, SurfaceMeshWithUncollectedGarbageMatchesTheCollectedMesh)
+{
+  const ce_test::Soup soup = ce_test::torus_soup(3, 1, 24, 12, 0.2, 7);
+  Mesh with_garbage = ce_test::to_mesh<Mesh>(soup);
+  const vertex_descriptor removed = *vertices(with_garbage).begin();
+  CGAL::Euler::remove_center_vertex(halfedge(removed, with_garbage), with_garbage);
+  ASSERT_TRUE(with_garbage.has_garbage());
+  Mesh collected = with_garbage;
+  collected.collect_garbage();
+
+  // (point, H) of every vertex, sorted by point: the two meshes number their vertices differently.
+  const auto mean_by_point = [](const Mesh& mesh) {
+    const auto mean = mesh.property_map<vertex_descriptor, double>("v:test_H").first;
+    std::vector<std::pair<Point, double>> values;
+    for (vertex_descriptor v : vertices(mesh))
+      values.emplace_back(mesh.point(v), get(mean, v));
+    std::sort(values.begin(), values.end());
+    return values;
+  };
+  for (Mesh* mesh : {&with_garbage, &collected}) {
+    auto mean = mesh->add_property_map<vertex_descriptor, double>("v:test_H").first;
+    CE::gauss_map_curvatures(*mesh, params::vertex_mean_curvature_map(mean));
+  }
+  const auto expected = mean_by_point(collected);
+  const auto actual = mean_by_point(with_garbage);
+  ASSERT_EQ(actual.size(), soup.points.size() - 1);
+  ASSERT_EQ(actual.size(), expected.size());
+  for (std::size_t i = 0; i < actual.size(); ++i) {
+    ASSERT_EQ(actual[i].first, expected[i].first);
+    ASSERT_TRUE(std::isfinite(actual[i].second)) << i;
+    EXPECT_NEAR(actual[i].second, expected[i].second, 1e-12 * (1 + std::abs(expected[i].second))) << i;
+  }
 }
 
 #ifdef CGAL_LINKED_WITH_TBB

@@ -196,8 +196,11 @@ private:
         if (cosine <= curve_pair_max_cosine)
           candidates_.push_back({cosine, {i, j}});
       }
-    std::stable_sort(candidates_.begin(), candidates_.end(),
-                     [](const Candidate& a, const Candidate& b) { return a.first < b.first; });
+    // Ties in the order (i, j) of generation, as a stable sort would leave them:
+    // std::stable_sort allocates a buffer at every call.
+    std::sort(candidates_.begin(), candidates_.end(), [](const Candidate& a, const Candidate& b) {
+      return a.first < b.first || (a.first == b.first && a.second < b.second);
+    });
     used_.assign(directions_.size(), 0);
     pairs_.clear();
     for (const Candidate& c : candidates_)

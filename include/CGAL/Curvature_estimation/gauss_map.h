@@ -173,14 +173,13 @@ void gauss_map_curvatures(const FaceGraph& g, const NamedParameters& np = parame
     const Eigen::Vector3d no_normal = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
 
     // First pass: every vertex's unit normal, since each is used by all its neighbours.
-    internal::Vertex_normal_table<FaceGraph> normals;
-    normals.reserve(num_vertices(g));
+    internal::Vertex_normal_table<FaceGraph> normals(g);
     if constexpr (given_normals) {
       const auto normal_map = get_parameter(np, CGAL::internal_np::vertex_normal_map);
       for (vertex_descriptor v : vertices(g)) {
         const Eigen::Vector3d n = internal::load_given_normal<true>(normal_map, v);
         const double length = n.norm();
-        normals.emplace(v, length > 0 && std::isfinite(length) ? Eigen::Vector3d(n / length) : no_normal);
+        normals.set(v, length > 0 && std::isfinite(length) ? Eigen::Vector3d(n / length) : no_normal);
       }
     } else {
       struct Normal_worker
@@ -201,7 +200,7 @@ void gauss_map_curvatures(const FaceGraph& g, const NamedParameters& np = parame
       };
       internal::for_each_vertex<ConcurrencyTag>(
         vertices(g), Normal_worker{internal::Platelet_fitter<FaceGraph, VPM>(g, vpm, settings), normal_method},
-        [&](vertex_descriptor v, const Eigen::Vector3d& n) { normals.emplace(v, n); });
+        [&](vertex_descriptor v, const Eigen::Vector3d& n) { normals.set(v, n); });
     }
 
     // Second pass: the differential at each vertex.

@@ -9,6 +9,7 @@
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/Surface_mesh/Surface_mesh_fwd.h>
 
 #include <boost/functional/hash.hpp>
 #include <boost/graph/graph_traits.hpp>
@@ -16,7 +17,11 @@
 #include <Eigen/Core>
 
 #include <cmath>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
 #include <unordered_map>
+#include <vector>
 
 namespace CGAL {
 namespace Curvature_estimation {
@@ -93,12 +98,58 @@ private:
 };
 
 // Unit vertex normals addressed by vertex, filled on the calling thread and then
-// only read (concurrent `find` on a const std::unordered_map is safe). A vertex
-// without a normal holds NaNs.
+// only read by the worker threads. A vertex without a normal holds NaNs. On a
+// Surface_mesh a vector by vertex index (one allocation); on other graphs a hash
+// map (a node per vertex; concurrent `find` on a const std::unordered_map is safe).
 template <typename FaceGraph>
-using Vertex_normal_table = std::unordered_map<typename boost::graph_traits<FaceGraph>::vertex_descriptor,
-                                               Eigen::Vector3d,
-                                               boost::hash<typename boost::graph_traits<FaceGraph>::vertex_descriptor>>;
+class Vertex_normal_table
+{
+  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
+
+  template <typename Graph>
+  struct Is_surface_mesh : std::false_type
+  {};
+  template <typename P>
+  struct Is_surface_mesh<CGAL::Surface_mesh<P>> : std::true_type
+  {};
+  static constexpr bool by_index = Is_surface_mesh<FaceGraph>::value;
+
+public:
+  explicit Vertex_normal_table(const FaceGraph& g)
+  {
+    if constexpr (by_index)  // indices of removed, not yet collected vertices included
+      by_index_.assign(g.number_of_vertices() + g.number_of_removed_vertices(),
+                       Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
+    else
+      by_vertex_.reserve(num_vertices(g));
+  }
+
+  void set(vertex_descriptor v, const Eigen::Vector3d& n)
+  {
+    if constexpr (by_index)
+      by_index_[std::size_t(v)] = n;
+    else
+      by_vertex_[v] = n;
+  }
+
+  // The unit normal of `u`; false where it has none.
+  bool find(vertex_descriptor u, Eigen::Vector3d& n) const
+  {
+    if constexpr (by_index) {
+      n = by_index_[std::size_t(u)];
+    } else {
+      const auto it = by_vertex_.find(u);
+      if (it == by_vertex_.end())
+        return false;
+      n = it->second;
+    }
+    return n.allFinite();
+  }
+
+private:
+  std::vector<Eigen::Vector3d> by_index_;
+  std::unordered_map<vertex_descriptor, Eigen::Vector3d, boost::hash<vertex_descriptor>> by_vertex_;
+};
 
 // The Gauss-map estimate at one vertex of a FaceGraph (faces: any polygons;
 // border halfedges are skipped, so boundary vertices use the faces they have).
@@ -153,14 +204,7 @@ public:
   }
 
 private:
-  bool lookup(vertex_descriptor u, Eigen::Vector3d& n) const
-  {
-    const auto it = normals_->find(u);
-    if (it == normals_->end() || !it->second.allFinite())
-      return false;
-    n = it->second;
-    return true;
-  }
+  bool lookup(vertex_descriptor u, Eigen::Vector3d& n) const { return normals_->find(u, n); }
 
   Eigen::Vector3d local(vertex_descriptor u) const { return (point_in_double(vpm_, u) - center_) / scale_; }
 
