@@ -1,5 +1,6 @@
 // Speed of every estimator of benchmark/estimators.h, in ns per vertex (the
-// `time_per_vertex` counter: seconds per vertex, e.g. 95n), on Surface_mesh:
+// `time_per_vertex` counter: seconds per vertex, e.g. 95n), and heap allocations per
+// vertex and call (`allocations_per_vertex`, all threads), on Surface_mesh:
 // grids of .1(cos pi x + cos pi y) with about 10k, 100k and 1M vertices and CGAL's
 // bunny, armadillo, elephant and Chinese dragon; sequential and parallel (TBB,
 // at most 2 threads). Benchmark names are ESTIMATOR/MESH/seq|par, which
@@ -21,11 +22,57 @@
 #include <tbb/global_control.h>
 #endif
 
+#include <atomic>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <memory>
+#include <new>
 #include <string>
 #include <vector>
+
+// Every heap allocation of the process, on any thread, is counted: the report checks
+// that our estimators allocate nothing per vertex (`allocations_per_vertex`). A slot
+// per thread, written only by its thread, so that counting does not slow down the
+// estimators that do allocate (jet fitting) by contention on one shared counter.
+namespace {
+constexpr int allocation_slots = 64;
+std::atomic<unsigned long long> allocations_by_slot[allocation_slots];
+std::atomic<unsigned long long> allocations_beyond_slots{0};  // threads without a slot of their own
+std::atomic<int> next_allocation_slot{0};
+
+void count_allocation()
+{
+  thread_local const int slot = next_allocation_slot.fetch_add(1);
+  if (slot < allocation_slots) {
+    std::atomic<unsigned long long>& own = allocations_by_slot[slot];
+    own.store(own.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
+  } else {
+    allocations_beyond_slots.fetch_add(1, std::memory_order_relaxed);
+  }
+}
+
+unsigned long long heap_allocations()
+{
+  unsigned long long sum = allocations_beyond_slots.load(std::memory_order_relaxed);
+  for (const auto& count : allocations_by_slot)
+    sum += count.load(std::memory_order_relaxed);
+  return sum;
+}
+} // namespace
+
+void* operator new(std::size_t size)
+{
+  count_allocation();
+  if (void* p = std::malloc(size == 0 ? 1 : size))
+    return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t size) { return operator new(size); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 namespace {
 
@@ -77,12 +124,15 @@ void time_estimator(benchmark::State& state, Estimator estimator, const Input& i
   const auto outputs = CE::parameters::vertex_mean_curvature_map(mean)
                          .vertex_Gaussian_curvature_map(gaussian)
                          .vertex_principal_curvatures_and_directions_map(principal);
+  const unsigned long long allocations_before = heap_allocations();
   for (auto _ : state) {
     run<ConcurrencyTag>(estimator, *mesh, given, outputs);
     benchmark::DoNotOptimize(mean[*vertices(*mesh).begin()]);
     benchmark::ClobberMemory();
   }
   const double n = static_cast<double>(num_vertices(*mesh));
+  state.counters["allocations_per_vertex"] =
+    double(heap_allocations() - allocations_before) / (n * double(state.iterations()));
   state.counters["vertices"] = n;
   state.counters["threads"] = std::is_same<ConcurrencyTag, CGAL::Sequential_tag>::value ? 1 : parallel_threads;
   // Seconds per vertex, printed with an SI prefix (e.g. 95n = 95 ns).
