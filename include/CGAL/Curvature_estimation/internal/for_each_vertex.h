@@ -50,7 +50,7 @@ constexpr bool accessible_concurrently()
 //                                        but the vertex point map.
 // store(vertex, result) writes the user's output maps.
 // load and store run on the calling thread unless `concurrent_maps` says that
-// every map they touch is accessible_concurrently (below): property maps such as
+// every map they touch is accessible_concurrently (above): property maps such as
 // the dynamic ones of Polyhedron_3 insert on `get` and are not thread-safe. In
 // parallel, vertices go in blocks of fixed size, so the extra memory is
 // O(block + threads x neighbourhood), not O(#vertices).
