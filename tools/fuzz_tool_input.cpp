@@ -7,14 +7,22 @@
 // exception, hang) is a finding.
 //   cmake -DCMAKE_CXX_COMPILER=clang++ -DCE_BUILD_FUZZERS=ON ... && ./fuzz_tool_input -runs=N
 // scripts/run_fuzz.sh runs it briefly over tools/fuzz_seeds/ (one seed per format).
-#define CE_CURVATURE_NO_MAIN
-#include "curvature.cpp"
+#include "soup_repair.h"
+#include "surface_estimation.h"
+#include "surface_input.h"
+#include "tetrahedral.h"
+#include "tool_error.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <string>
 #include <unistd.h>
+#include <vector>
+
+using namespace ce_tool;
 
 namespace {
 

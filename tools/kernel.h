@@ -1,0 +1,19 @@
+// The geometry every part of the tool shares: points read from files and given
+// to the estimators are points of this kernel.
+#ifndef CE_TOOLS_KERNEL_H
+#define CE_TOOLS_KERNEL_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+// Declared so that the alias below needs no estimator header.
+namespace CGAL::Curvature_estimation {}
+
+namespace ce_tool {
+
+namespace CE = CGAL::Curvature_estimation;
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+
+} // namespace ce_tool
+
+#endif // CE_TOOLS_KERNEL_H

@@ -1,0 +1,68 @@
+#include "summary.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <iostream>
+
+namespace ce_tool {
+
+namespace {
+
+void print_range(const char* name, std::vector<double> values)
+{
+  if (values.empty()) {
+    std::cout << name << ": no estimate\n";
+    return;
+  }
+  std::sort(values.begin(), values.end());
+  std::cout << name << ": min " << values.front() << ", median " << values[values.size() / 2]
+            << ", max " << values.back() << '\n';
+}
+
+// The summary's lines after the input's: time, ranges of H and K, status counts.
+template <typename Row_type>
+void print_estimates(const std::vector<Row_type>& rows, std::size_t vertices, double seconds)
+{
+  std::size_t ok = 0, widened = 0, failed = 0;
+  std::vector<double> H, K;
+  for (const Row_type& r : rows) {
+    switch (r.status) {
+      case CE::Estimation_status::ok: ++ok; break;
+      case CE::Estimation_status::widened: ++widened; break;
+      default: ++failed; continue;
+    }
+    H.push_back(r.mean);
+    K.push_back(r.gaussian);
+  }
+  std::cout << "time: " << seconds * 1e3 << " ms";
+  if (vertices > 0)
+    std::cout << " (" << seconds * 1e9 / double(vertices) << " ns per vertex)";
+  std::cout << '\n';
+  print_range("mean curvature H", H);
+  print_range("Gaussian curvature K", K);
+  std::cout << "ok: " << ok << ", widened: " << widened << ", failed (not estimable): " << failed << '\n';
+}
+
+} // namespace
+
+void print_surface_summary(const Options& o, const Soup& soup, const Mesh& mesh, const std::vector<Row>& rows,
+                           double seconds)
+{
+  std::cout << "input: " << o.input << '\n'
+            << "vertices: " << soup.points.size() << " in the file (" << num_vertices(mesh) << " in the mesh, "
+            << num_faces(mesh) << " faces)\n"
+            << "method: " << o.method_name << '\n';
+  print_estimates(rows, num_vertices(mesh), seconds);
+}
+
+void print_tetrahedral_summary(const Options& o, const Tetrahedral_input& input,
+                               const std::vector<Tetrahedral_row>& rows, double seconds)
+{
+  std::cout << "input: " << o.input << '\n'
+            << "vertices: " << input.mesh.points.size() << '\n'
+            << "tetrahedra: " << input.mesh.cells.size() << '\n'
+            << "method: " << o.method_name << " (hypersurface of R^4)\n";
+  print_estimates(rows, input.mesh.points.size(), seconds);
+}
+
+} // namespace ce_tool

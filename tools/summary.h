@@ -1,0 +1,24 @@
+// The summary the tool prints on stdout when no output file is asked for: the
+// input, the method, the time, the ranges of H and K and the status counts.
+#ifndef CE_TOOLS_SUMMARY_H
+#define CE_TOOLS_SUMMARY_H
+
+#include "command_line.h"
+#include "soup_repair.h"
+#include "surface_estimation.h"
+#include "surface_input.h"
+#include "tetrahedral.h"
+
+#include <vector>
+
+namespace ce_tool {
+
+void print_surface_summary(const Options& o, const Soup& soup, const Mesh& mesh, const std::vector<Row>& rows,
+                           double seconds);
+
+void print_tetrahedral_summary(const Options& o, const Tetrahedral_input& input,
+                               const std::vector<Tetrahedral_row>& rows, double seconds);
+
+} // namespace ce_tool
+
+#endif // CE_TOOLS_SUMMARY_H

@@ -1,0 +1,79 @@
+#include "surface_estimation.h"
+
+#include "estimation_settings.h"
+
+#include <CGAL/Curvature_estimation.h>
+
+#include <cstddef>
+#include <limits>
+
+namespace ce_tool {
+
+namespace {
+
+Row failed_row()
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  return Row{nan, nan, nan, nan, {nan, nan, nan}, {nan, nan, nan}, CE::Estimation_status::not_estimable};
+}
+
+template <typename Tag>
+void run_estimator(const Options& o, const Mesh& mesh,
+                   Mesh::Property_map<V, double> H, Mesh::Property_map<V, double> K,
+                   Mesh::Property_map<V, CE::Principal_curvatures_and_directions<Kernel>> pcd,
+                   Mesh::Property_map<V, CE::Estimation_status> status)
+{
+  const auto np = CE::parameters::vertex_mean_curvature_map(H)
+                    .vertex_Gaussian_curvature_map(K)
+                    .vertex_principal_curvatures_and_directions_map(pcd)
+                    .vertex_estimation_status_map(status);
+  const auto ring_np = with_rings(o, np);
+  switch (o.method) {
+    case Method::paraboloid: CE::paraboloid_fitting_curvatures<Tag>(mesh, ring_np); break;
+    case Method::gauss_map: CE::gauss_map_curvatures<Tag>(mesh, ring_np); break;
+    case Method::taubin: CE::taubin_curvatures<Tag>(mesh, ring_np); break;
+    case Method::chen_schmitt: CE::chen_schmitt_curvatures<Tag>(mesh, ring_np); break;
+    case Method::jet:
+      CE::jet_fitting_curvatures<Tag>(mesh, ring_np.jet_degree(o.degree.value_or(2))
+                                              .monge_degree(o.monge_degree.value_or(2)));
+      break;
+    case Method::curve_network:
+      CE::curve_network_curvatures<Tag>(mesh, np.extrapolation_order(o.order.value_or(1)));
+      break;
+  }
+}
+
+} // namespace
+
+std::vector<Row> estimate(const Options& o, const Mesh& mesh_in, const std::vector<V>& file_to_mesh, double& seconds)
+{
+  Mesh& mesh = const_cast<Mesh&>(mesh_in);  // property maps only; geometry untouched
+  auto H = mesh.add_property_map<V, double>("v:ce_H").first;
+  auto K = mesh.add_property_map<V, double>("v:ce_K").first;
+  auto pcd = mesh.add_property_map<V, CE::Principal_curvatures_and_directions<Kernel>>("v:ce_pcd").first;
+  auto status = mesh.add_property_map<V, CE::Estimation_status>("v:ce_status", CE::Estimation_status::not_estimable).first;
+
+  seconds = 0;
+  if (!is_empty(mesh))
+    seconds = run_with_threads(o.threads, [&](auto tag) { run_estimator<decltype(tag)>(o, mesh, H, K, pcd, status); });
+
+  std::vector<Row> rows(file_to_mesh.size(), failed_row());
+  for (std::size_t i = 0; i < file_to_mesh.size(); ++i) {
+    const V v = file_to_mesh[i];
+    if (v == V() || status[v] == CE::Estimation_status::not_estimable)
+      continue;
+    const auto& c = pcd[v];
+    Row r{c.max_curvature, c.min_curvature, H[v], K[v],
+          {c.max_direction.x(), c.max_direction.y(), c.max_direction.z()},
+          {c.min_direction.x(), c.min_direction.y(), c.min_direction.z()},
+          status[v]};
+    rows[i] = r;
+  }
+  mesh.remove_property_map(H);
+  mesh.remove_property_map(K);
+  mesh.remove_property_map(pcd);
+  mesh.remove_property_map(status);
+  return rows;
+}
+
+} // namespace ce_tool

@@ -1,0 +1,40 @@
+// Surface input: a polygon soup from an OFF, PLY, OBJ or STL file, checked for
+// what the later steps need (vertices, faces, finite coordinates, valid indices).
+#ifndef CE_TOOLS_SURFACE_INPUT_H
+#define CE_TOOLS_SURFACE_INPUT_H
+
+#include "kernel.h"
+
+#include <cstddef>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace ce_tool {
+
+using Polygon = std::vector<std::size_t>;
+
+struct Soup
+{
+  std::vector<Point> points;
+  std::vector<Polygon> polygons;
+};
+
+// CGAL's readers write diagnostics to std::cerr; the tool's contract is one line.
+struct Silence_cerr
+{
+  std::ostringstream sink;
+  std::streambuf* saved;
+  Silence_cerr() : saved(std::cerr.rdbuf(sink.rdbuf())) {}
+  ~Silence_cerr() { std::cerr.rdbuf(saved); }
+};
+
+// The soup of the file at `path`, in the file's order. OFF is read by the strict
+// reader of mesh_readers.h, PLY, OBJ and STL by CGAL after checks of what its
+// readers do not survive.
+Soup read_input(const std::string& path);
+
+} // namespace ce_tool
+
+#endif // CE_TOOLS_SURFACE_INPUT_H

@@ -1,0 +1,91 @@
+#include "tetrahedral.h"
+
+#include "estimation_settings.h"
+#include "input_files.h"
+#include "mesh_readers.h"
+#include "tool_error.h"
+
+#include <CGAL/Curvature_estimation/hypersurface_paraboloid_fitting.h>
+#include <CGAL/property_map.h>
+
+#include <cstddef>
+#include <filesystem>
+#include <system_error>
+#include <utility>
+
+namespace ce_tool {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The .sol beside the .mesh (same name, extension .sol) unless --scalars names one.
+std::string scalars_path(const std::string& mesh_path, const std::string& scalars)
+{
+  if (!scalars.empty()) {
+    if (lower_extension(scalars) != ".sol")
+      fail("--scalars '" + scalars + "' must be a Medit .sol file", 2);
+    return scalars;
+  }
+  const std::string beside = fs::path(mesh_path).replace_extension(".sol").string();
+  std::error_code ec;
+  if (!fs::exists(beside, ec))
+    fail("no scalar field for '" + mesh_path + "': '" + beside +
+         "' does not exist (name a Medit .sol with --scalars FILE.sol)");
+  return beside;
+}
+
+} // namespace
+
+Tetrahedral_input read_tetrahedral_input(const std::string& mesh_path, const std::string& scalars)
+{
+  const Tetrahedral_mesh_data data =
+    read_strictly(mesh_path, [](const std::string& text) { return read_medit_mesh(text); });
+  Tetrahedral_input input;
+  input.mesh.points.reserve(data.points.size());
+  for (const auto& p : data.points)
+    input.mesh.points.emplace_back(p[0], p[1], p[2]);
+  input.mesh.cells = data.cells;
+  for (std::size_t t = 0; t < input.mesh.cells.size(); ++t) {
+    auto& c = input.mesh.cells[t];
+    const auto& p = input.mesh.points;
+    switch (CGAL::orientation(p[c[0]], p[c[1]], p[c[2]], p[c[3]])) {
+      case CGAL::COPLANAR:
+        fail("degenerate file '" + mesh_path + "': tetrahedron " + std::to_string(t + 1) + " has zero volume");
+      case CGAL::NEGATIVE: std::swap(c[2], c[3]); break;
+      default: break;
+    }
+  }
+  const std::size_t vertices = data.points.size();
+  input.scalars = read_strictly(scalars_path(mesh_path, scalars), [vertices](const std::string& text) {
+    return read_medit_sol(text, vertices);
+  });
+  return input;
+}
+
+std::vector<Tetrahedral_row> estimate_tetrahedral(const Options& o, const Tetrahedral_input& input, double& seconds)
+{
+  const std::size_t n = input.mesh.points.size();
+  std::vector<CE::Hypersurface_principal_curvatures_and_directions<std::array<double, 4>>> principal(n);
+  std::vector<double> H(n), K(n);
+  std::vector<CE::Estimation_status> status(n, CE::Estimation_status::not_estimable);
+  const auto points =
+    CE::make_graph_point_map(CE::Tetrahedral_complex_traits<Tetrahedral_mesh>::default_point_map(input.mesh),
+                             CGAL::make_property_map(input.scalars));
+  const auto np = with_rings(o, CE::parameters::vertex_point_map(points)
+                                  .vertex_principal_curvatures_and_directions_map(CGAL::make_property_map(principal))
+                                  .vertex_mean_curvature_map(CGAL::make_property_map(H))
+                                  .vertex_Gaussian_curvature_map(CGAL::make_property_map(K))
+                                  .vertex_estimation_status_map(CGAL::make_property_map(status)));
+  seconds = run_with_threads(o.threads, [&](auto tag) {
+    CE::hypersurface_paraboloid_fitting_curvatures<decltype(tag)>(input.mesh, np);
+  });
+
+  std::vector<Tetrahedral_row> rows(n);
+  for (std::size_t v = 0; v < n; ++v)
+    rows[v] = {principal[v].max_curvature, principal[v].mid_curvature, principal[v].min_curvature, H[v], K[v],
+               status[v]};
+  return rows;
+}
+
+} // namespace ce_tool

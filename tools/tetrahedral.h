@@ -1,0 +1,46 @@
+// Tetrahedral input: the graph W = f(x, y, z) over a Medit .mesh, f from a .sol,
+// read, oriented, and estimated as a hypersurface of R^4.
+#ifndef CE_TOOLS_TETRAHEDRAL_H
+#define CE_TOOLS_TETRAHEDRAL_H
+
+#include "command_line.h"
+#include "kernel.h"
+
+#include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
+#include <CGAL/Curvature_estimation/Tetrahedral_complex_traits.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace ce_tool {
+
+using Tetrahedral_mesh = CE::Indexed_tetrahedral_mesh<Point>;
+
+struct Tetrahedral_input
+{
+  Tetrahedral_mesh mesh;
+  std::vector<double> scalars;  // f at the vertices
+};
+
+// The syntax and the combinatorics are the reader's (mesh_readers.h); the geometry
+// is checked here, with CGAL's exact orientation predicate: a flat tetrahedron is an
+// error, and each tetrahedron is made positively oriented, which orients the
+// hypersurface's normal towards increasing f (see hypersurface_paraboloid_fitting_curvatures).
+// f is read from the .sol `scalars` names, or from the .sol beside the .mesh if it is empty.
+Tetrahedral_input read_tetrahedral_input(const std::string& mesh_path, const std::string& scalars);
+
+struct Tetrahedral_row
+{
+  double k_1, k_2, k_3, mean, gaussian;
+  CE::Estimation_status status;
+
+  std::array<double, 5> values() const { return {k_1, k_2, k_3, mean, gaussian}; }
+};
+
+// A row per vertex of the .mesh, in its order; `seconds` is the estimator's time.
+std::vector<Tetrahedral_row> estimate_tetrahedral(const Options& o, const Tetrahedral_input& input, double& seconds);
+
+} // namespace ce_tool
+
+#endif // CE_TOOLS_TETRAHEDRAL_H

@@ -1,0 +1,154 @@
+#include "writers.h"
+
+#include "tool_error.h"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+
+namespace ce_tool {
+
+namespace {
+
+// Shortest text that reads back to the same double; "nan" for any NaN.
+void put_double(std::string& out, double x)
+{
+  if (std::isnan(x)) {
+    out += "nan";
+    return;
+  }
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
+  out.append(buffer, result.ptr);
+}
+
+// The header line, then a row per vertex: its values, then its status.
+template <typename Row_type>
+std::string csv_text(const char* header, const std::vector<Row_type>& rows)
+{
+  std::string out = std::string(header) + "\n";
+  out.reserve(rows.size() * 16 * (Row_type().values().size() + 1) + out.size());
+  for (const Row_type& r : rows) {
+    for (double x : r.values()) {
+      put_double(out, x);
+      out += ',';
+    }
+    out += CE::to_string(r.status);
+    out += '\n';
+  }
+  return out;
+}
+
+double quantity(const Row& r, Quantity q)
+{
+  switch (q) {
+    case Quantity::k_max: return r.k_max;
+    case Quantity::k_min: return r.k_min;
+    case Quantity::mean: return r.mean;
+    default: return r.gaussian;
+  }
+}
+
+// Diverging colours: blue (negative) - white (0) - red (positive), saturated at
+// the 95th percentile of |value| over estimated vertices; failed vertices grey.
+std::array<unsigned char, 3> colour(double value, double scale)
+{
+  if (!std::isfinite(value))
+    return {128, 128, 128};
+  double t = scale > 0 ? std::clamp(value / scale, -1.0, 1.0) : 0.0;
+  const auto c = [](double x) { return static_cast<unsigned char>(std::lround(255.0 * x)); };
+  if (t >= 0)
+    return {255, c(1 - t), c(1 - t)};
+  return {c(1 + t), c(1 + t), 255};
+}
+
+// Little-endian bytes, whatever the host's byte order.
+template <typename Unsigned>
+void put_le(std::string& out, Unsigned bits)
+{
+  for (std::size_t i = 0; i < sizeof(Unsigned); ++i)
+    out += static_cast<char>((bits >> (8 * i)) & 0xff);
+}
+
+void put_binary(std::string& out, double x)
+{
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  put_le(out, bits);
+}
+
+} // namespace
+
+std::string surface_csv_text(const std::vector<Row>& rows)
+{
+  return csv_text("k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,status", rows);
+}
+
+std::string tetrahedral_csv_text(const std::vector<Tetrahedral_row>& rows)
+{
+  return csv_text("k_1,k_2,k_3,mean,gaussian,status", rows);
+}
+
+std::string ply_text(const Soup& soup, const std::vector<Row>& rows, Quantity q)
+{
+  std::vector<double> magnitudes;
+  for (const Row& r : rows)
+    if (r.status != CE::Estimation_status::not_estimable && std::isfinite(quantity(r, q)))
+      magnitudes.push_back(std::abs(quantity(r, q)));
+  double scale = 0;
+  if (!magnitudes.empty()) {
+    const std::size_t k = std::min(magnitudes.size() - 1, magnitudes.size() * 95 / 100);
+    std::nth_element(magnitudes.begin(), magnitudes.begin() + k, magnitudes.end());
+    scale = magnitudes[k];
+  }
+
+  std::size_t faces = 0;
+  for (const Polygon& p : soup.polygons) {
+    if (p.size() > 255)
+      fail("a face of the input has more than 255 vertices, which the PLY output does not support");
+    faces += p.size() >= 3;
+  }
+
+  std::string out;
+  out += "ply\nformat binary_little_endian 1.0\n";
+  out += "comment written by curvature: the vertices and faces of the input file, in its order\n";
+  out += "comment status: 0 = ok, 1 = widened, 2 = failed (its curvature values are NaN)\n";
+  out += std::string("comment colours: ") + quantity_name(q) +
+         ", blue < 0 < red, saturated at the 95th percentile of |value|; failed grey\n";
+  out += "element vertex " + std::to_string(soup.points.size()) + "\n";
+  for (const char* name : {"x", "y", "z", "k_max", "k_min", "mean", "gaussian", "d_max_x", "d_max_y", "d_max_z",
+                           "d_min_x", "d_min_y", "d_min_z"})
+    out += std::string("property double ") + name + "\n";
+  out += "property uchar status\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n";
+  out += "element face " + std::to_string(faces) + "\n";
+  out += "property list uchar int vertex_indices\n";
+  out += "end_header\n";
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const Point& p = soup.points[i];
+    const Row& r = rows[i];
+    for (double x : {p.x(), p.y(), p.z()})
+      put_binary(out, x);
+    for (double x : r.values())
+      put_binary(out, x);
+    out += static_cast<char>(r.status);
+    for (unsigned char c : colour(quantity(r, q), scale))
+      out += static_cast<char>(c);
+  }
+  for (const Polygon& p : soup.polygons) {
+    if (p.size() < 3)
+      continue;
+    out += static_cast<char>(p.size());
+    for (std::size_t index : p) {
+      if (index > std::size_t(std::numeric_limits<std::int32_t>::max()))
+        fail("a vertex index does not fit the PLY output's int");
+      put_le(out, static_cast<std::uint32_t>(index));
+    }
+  }
+  return out;
+}
+
+} // namespace ce_tool
