@@ -38,7 +38,7 @@ int run_surface(const Options& o)
 {
   const Soup soup = read_input(o.input);
   std::vector<V> file_to_mesh;
-  const Mesh mesh = build_mesh(soup, file_to_mesh);
+  Mesh mesh = build_mesh(soup, file_to_mesh);
   double seconds = 0;
   const std::vector<Row> rows = estimate(o, mesh, file_to_mesh, seconds);
   if (!o.output.empty()) {

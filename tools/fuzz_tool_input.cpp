@@ -50,7 +50,7 @@ void run_surface_input(const std::string& path)
   const Soup soup = read_input(path);
   std::vector<V> file_to_mesh;
   Silence_cerr silence;  // repair notes
-  const Mesh mesh = build_mesh(soup, file_to_mesh);
+  Mesh mesh = build_mesh(soup, file_to_mesh);
   double seconds = 0;
   check_rows(estimate(o, mesh, file_to_mesh, seconds), soup.points.size());
 }

@@ -45,9 +45,8 @@ void run_estimator(const Options& o, const Mesh& mesh,
 
 } // namespace
 
-std::vector<Row> estimate(const Options& o, const Mesh& mesh_in, const std::vector<V>& file_to_mesh, double& seconds)
+std::vector<Row> estimate(const Options& o, Mesh& mesh, const std::vector<V>& file_to_mesh, double& seconds)
 {
-  Mesh& mesh = const_cast<Mesh&>(mesh_in);  // property maps only; geometry untouched
   auto H = mesh.add_property_map<V, double>("v:ce_H").first;
   auto K = mesh.add_property_map<V, double>("v:ce_K").first;
   auto pcd = mesh.add_property_map<V, CE::Principal_curvatures_and_directions<Kernel>>("v:ce_pcd").first;

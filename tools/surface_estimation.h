@@ -28,8 +28,8 @@ struct Row
 
 // The rows of the file's vertices (file_to_mesh from build_mesh), a failed row
 // where a vertex is in no face or not estimable; `seconds` is the estimator's
-// time.
-std::vector<Row> estimate(const Options& o, const Mesh& mesh, const std::vector<V>& file_to_mesh, double& seconds);
+// time. The estimator's output maps are added to `mesh` and removed after.
+std::vector<Row> estimate(const Options& o, Mesh& mesh, const std::vector<V>& file_to_mesh, double& seconds);
 
 } // namespace ce_tool
 
