@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Configure (Release, tests + examples ON), build everything, run CTest.
-# env: BUILD_DIR (default ./build), JOBS (default nproc).
+# env: BUILD_DIR (default ./build), JOBS (default nproc),
+#      CGAL_DIR (a CGAL other than the system's, e.g. ../shared/cgal-6.1.1/lib/cmake/CGAL;
+#      the downstream tests use it too), CE_BUILD_BENCHMARKS (default ON).
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -8,8 +10,13 @@ cd "$ROOT"
 BUILD_DIR="${BUILD_DIR:-build}"
 JOBS="${JOBS:-$(nproc 2>/dev/null || echo 2)}"
 
+cgal=()
+if [ -n "${CGAL_DIR:-}" ]; then
+  cgal=(-DCGAL_DIR="$CGAL_DIR")
+fi
+
 bash scripts/install_dependencies.sh
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release \
-  -DCE_BUILD_TESTS=ON -DCE_BUILD_EXAMPLES=ON
+cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "${cgal[@]}" \
+  -DCE_BUILD_TESTS=ON -DCE_BUILD_EXAMPLES=ON -DCE_BUILD_BENCHMARKS="${CE_BUILD_BENCHMARKS:-ON}"
 cmake --build "$BUILD_DIR" -j "$JOBS"
 ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"

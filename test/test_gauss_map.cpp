@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "estimator_runs.h"
+#include "surface_mesh_properties.h"
 #include "test_surfaces.h"
 
 #include <algorithm>
@@ -583,7 +584,7 @@ TEST(Gauss_map, SurfaceMeshWithUncollectedGarbageMatchesTheCollectedMesh)
 
   // (point, H) of every vertex, sorted by point: the two meshes number their vertices differently.
   const auto mean_by_point = [](const Mesh& mesh) {
-    const auto mean = mesh.property_map<vertex_descriptor, double>("v:test_H").first;
+    const auto mean = *ce_test::find_property_map<vertex_descriptor, double>(mesh, "v:test_H");
     std::vector<std::pair<Point, double>> values;
     for (vertex_descriptor v : vertices(mesh))
       values.emplace_back(mesh.point(v), get(mean, v));

@@ -11,6 +11,8 @@
 #include <CGAL/IO/PLY.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "surface_mesh_properties.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -770,12 +772,12 @@ TEST_F(ToolTest, PlyOutputReadsBack)
     EXPECT_EQ(num_vertices(mesh), n);
     EXPECT_EQ(num_faces(mesh), m.faces.size());
     // The properties are there, with the CSV's values.
-    auto H = mesh.property_map<decltype(mesh)::Vertex_index, double>("v:mean");
-    ASSERT_TRUE(H.second) << "no vertex property 'mean'";
+    const auto H = ce_test::find_property_map<decltype(mesh)::Vertex_index, double>(mesh, "v:mean");
+    ASSERT_TRUE(H) << "no vertex property 'mean'";
     const std::vector<Row> rows = csv(p);
     ASSERT_EQ(rows.size(), n);
     for (auto v : vertices(mesh))
-      EXPECT_EQ(H.first[v], rows[std::size_t(v)].values[2]);
+      EXPECT_EQ((*H)[v], rows[std::size_t(v)].values[2]);
   }
   // With an isolated vertex, read back as a soup: same vertex count as the file.
   m.points.push_back({9, 9, 9});
@@ -792,14 +794,14 @@ TEST_F(ToolTest, PlyOutputReadsBack)
   std::ifstream in(output, std::ios::binary);
   ASSERT_TRUE(CGAL::IO::read_PLY(in, mesh));
   ASSERT_EQ(num_vertices(mesh), m.points.size());
-  auto H = mesh.property_map<decltype(mesh)::Vertex_index, double>("v:mean");
-  ASSERT_TRUE(H.second);
+  const auto H = ce_test::find_property_map<decltype(mesh)::Vertex_index, double>(mesh, "v:mean");
+  ASSERT_TRUE(H);
   const auto last = *std::prev(vertices(mesh).end());
-  EXPECT_TRUE(std::isnan(H.first[last]));
-  EXPECT_TRUE(std::isfinite(H.first[*vertices(mesh).begin()]));
-  auto status = mesh.property_map<decltype(mesh)::Vertex_index, unsigned char>("v:status");
-  ASSERT_TRUE(status.second);
-  EXPECT_EQ(int(status.first[last]), 2);
+  EXPECT_TRUE(std::isnan((*H)[last]));
+  EXPECT_TRUE(std::isfinite((*H)[*vertices(mesh).begin()]));
+  const auto status = ce_test::find_property_map<decltype(mesh)::Vertex_index, unsigned char>(mesh, "v:status");
+  ASSERT_TRUE(status);
+  EXPECT_EQ(int((*status)[last]), 2);
 }
 
 TEST_F(ToolTest, SummaryAndHelp)

@@ -6,7 +6,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/generators.h>
 
 #if __cplusplus < 201703L
 #error "CGAL::Curvature_estimation must propagate C++17"

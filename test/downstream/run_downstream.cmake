@@ -3,7 +3,7 @@
 #   cmake -DCE_MODE=find_package|add_subdirectory
 #         -DCE_SOURCE_DIR=<repo root> -DCE_BINARY_DIR=<build dir of the repo>
 #         -DCE_WORK_DIR=<scratch dir> [-DCE_GENERATOR=<generator>]
-#         [-DCE_CXX_COMPILER=<c++>] [-DCE_CONFIG=Release]
+#         [-DCE_CXX_COMPILER=<c++>] [-DCE_CONFIG=Release] [-DCE_CGAL_DIR=<CGAL's CMake dir>]
 #         -P test/downstream/run_downstream.cmake
 #
 # find_package:     cmake --install CE_BINARY_DIR --prefix CE_WORK_DIR/prefix,
@@ -39,6 +39,10 @@ if(CE_GENERATOR)
 endif()
 if(CE_CXX_COMPILER)
   list(APPEND configure_args "-DCMAKE_CXX_COMPILER=${CE_CXX_COMPILER}")
+endif()
+if(CE_CGAL_DIR)
+  # The CGAL the package was configured with, also for find_dependency(CGAL) of the installed config.
+  list(APPEND configure_args "-DCGAL_DIR=${CE_CGAL_DIR}")
 endif()
 
 if(CE_MODE STREQUAL "find_package")

@@ -2,14 +2,23 @@
 #ifndef CGAL_CURVATURE_ESTIMATION_PRINCIPAL_CURVATURES_AND_DIRECTIONS_H
 #define CGAL_CURVATURE_ESTIMATION_PRINCIPAL_CURVATURES_AND_DIRECTIONS_H
 
+#include <CGAL/version.h>
+
+#if CGAL_VERSION_MAJOR >= 6
+#include <CGAL/Polygon_mesh_processing/interpolated_corrected_curvatures.h>
+#endif
+
 #include <ostream>
 
 namespace CGAL {
 namespace Curvature_estimation {
 
 /// \ingroup PkgCurvatureEstimationRef
-/// Principal curvatures and principal directions at a vertex of a surface in R^3,
-/// with the field names of CGAL 6's `Polygon_mesh_processing::Principal_curvatures_and_directions`.
+/// Principal curvatures and principal directions at a vertex of a surface in R^3.
+/// With CGAL 6 or later this is `CGAL::Polygon_mesh_processing::Principal_curvatures_and_directions<GT>`
+/// itself, so that the same property map serves CGAL's `interpolated_corrected_curvatures()`
+/// and the estimators of this package; with CGAL 5 it is a struct with the same fields
+/// and constructors.
 ///
 /// Conventions: `max_curvature >= min_curvature`; the directions are unit tangent
 /// vectors, orthogonal to each other and to the normal. With outward normals a sphere
@@ -17,6 +26,10 @@ namespace Curvature_estimation {
 /// At a vertex whose status is `Estimation_status::not_estimable`, every field is NaN.
 ///
 /// \tparam GT a geometric traits class providing `FT` and `Vector_3`.
+#if CGAL_VERSION_MAJOR >= 6 && !defined(DOXYGEN_RUNNING)
+template <typename GT>
+using Principal_curvatures_and_directions = ::CGAL::Polygon_mesh_processing::Principal_curvatures_and_directions<GT>;
+#else
 template <typename GT>
 struct Principal_curvatures_and_directions
 {
@@ -38,6 +51,7 @@ struct Principal_curvatures_and_directions
       min_direction(min_direction), max_direction(max_direction)
   {}
 };
+#endif
 
 /// \ingroup PkgCurvatureEstimationRef
 /// The outcome of an estimation at one vertex, written to the map given as

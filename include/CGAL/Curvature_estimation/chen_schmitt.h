@@ -123,7 +123,8 @@ namespace Curvature_estimation {
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// \throws std::invalid_argument if a parameter is out of its range.
+/// \throws std::invalid_argument if a parameter is out of its range, or if `ball_radius`
+///         is given (neighborhoods are set in rings).
 template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename FaceGraph,
           typename NamedParameters = parameters::Default_named_parameters>

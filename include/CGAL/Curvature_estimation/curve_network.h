@@ -418,7 +418,8 @@ private:
 /// \cgalNamedParamsEnd
 ///
 /// \throws std::invalid_argument if `extrapolation_order` is not in 1..4, or is
-///         greater than 1 with `Curve_model::circle`.
+///         greater than 1 with `Curve_model::circle`, or if `ball_radius` is given
+///         (neighborhoods are set in rings).
 template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename FaceGraph,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -432,6 +433,7 @@ void curve_network_curvatures(const FaceGraph& g,
   using VPM = typename CGAL::GetVertexPointMap<FaceGraph, NamedParameters>::const_type;
 
 
+  internal::reject_ball_radius<NamedParameters>("curve_network_curvatures");
   const Curve_model model = choose_parameter(get_parameter(np, internal_np::curve_model), Curve_model::bezier);
   const int order = choose_parameter(get_parameter(np, internal_np::extrapolation_order), 1);
   if (order < 1 || order > internal::max_extrapolation_order)

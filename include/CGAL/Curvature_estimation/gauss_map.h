@@ -149,7 +149,8 @@ namespace Curvature_estimation {
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// \throws std::invalid_argument if a parameter is out of its range.
+/// \throws std::invalid_argument if a parameter is out of its range, or if `ball_radius`
+///         is given (neighborhoods are set in rings).
 template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename FaceGraph,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -162,6 +163,7 @@ void gauss_map_curvatures(const FaceGraph& g, const NamedParameters& np = parame
   using VPM = typename CGAL::GetVertexPointMap<FaceGraph, NamedParameters>::const_type;
   constexpr bool given_normals = internal::has_parameter<NamedParameters, ::CGAL::internal_np::vertex_normal_map_t>();
 
+  internal::reject_ball_radius<NamedParameters>("gauss_map_curvatures");
   const internal::Platelet_fit_settings settings = internal::platelet_fit_settings(np, "gauss_map_curvatures");
   const Vertex_normal_method normal_method =
     choose_parameter(get_parameter(np, internal_np::vertex_normal_method), Vertex_normal_method::quadric_fit);

@@ -146,7 +146,8 @@ namespace Curvature_estimation {
 /// \cgalNamedParamsEnd
 ///
 /// \throws std::invalid_argument if a parameter is out of its range, a cell index is out of
-///         range, or the points do not have 4 coordinates.
+///         range, the points do not have 4 coordinates, or `ball_radius` is given
+///         (neighborhoods are set in rings).
 template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename TetrahedralComplex,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -159,6 +160,7 @@ void hypersurface_paraboloid_fitting_curvatures(const TetrahedralComplex& comple
   using Stars = Tetrahedral_complex_stars<TetrahedralComplex>;
   using Fitter = internal::Tetrahedral_platelet_fitter<Stars>;
 
+  internal::reject_ball_radius<NamedParameters>("hypersurface_paraboloid_fitting_curvatures");
   const internal::Platelet_fit_settings settings =
     internal::platelet_fit_settings(np, "hypersurface_paraboloid_fitting_curvatures");
   const Vertex_normal_method normal_method =
@@ -208,8 +210,8 @@ void hypersurface_paraboloid_fitting_curvatures(const TetrahedralComplex& comple
       boost::irange(std::size_t(0), stars.size()), worker,
       [&](std::size_t i, const internal::Hypersurface_estimate& e) {
         const auto v = stars.vertices[i];
-        if constexpr (internal::has_vertex_principal_curvatures_and_directions_map<NamedParameters>()) {
-          auto map = internal::get_vertex_principal_curvatures_and_directions_map(np);
+        if constexpr (internal::has_parameter<NamedParameters, internal_np::vertex_principal_curvatures_and_directions_map_t>()) {
+          auto map = get_parameter(np, internal_np::vertex_principal_curvatures_and_directions_map);
           using Value = typename boost::property_traits<std::remove_cv_t<std::remove_reference_t<decltype(map)>>>::value_type;
           using V4 = std::remove_cv_t<std::remove_reference_t<decltype(Value().max_direction)>>;
           using FT = typename Value::FT;
@@ -222,13 +224,13 @@ void hypersurface_paraboloid_fitting_curvatures(const TetrahedralComplex& comple
           value.min_direction = from_vector_4<V4>(e.directions.col(2));
           put(map, v, value);
         }
-        if constexpr (internal::has_vertex_mean_curvature_map<NamedParameters>()) {
-          auto map = internal::get_vertex_mean_curvature_map(np);
+        if constexpr (internal::has_parameter<NamedParameters, internal_np::vertex_mean_curvature_map_t>()) {
+          auto map = get_parameter(np, internal_np::vertex_mean_curvature_map);
           using FT = typename boost::property_traits<std::remove_cv_t<std::remove_reference_t<decltype(map)>>>::value_type;
           put(map, v, FT(e.curvatures.sum() / 3));
         }
-        if constexpr (internal::has_vertex_Gaussian_curvature_map<NamedParameters>()) {
-          auto map = internal::get_vertex_Gaussian_curvature_map(np);
+        if constexpr (internal::has_parameter<NamedParameters, internal_np::vertex_Gaussian_curvature_map_t>()) {
+          auto map = get_parameter(np, internal_np::vertex_Gaussian_curvature_map);
           using FT = typename boost::property_traits<std::remove_cv_t<std::remove_reference_t<decltype(map)>>>::value_type;
           put(map, v, FT(e.curvatures.prod()));
         }

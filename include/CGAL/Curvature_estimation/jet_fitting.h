@@ -187,7 +187,8 @@ private:
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// \throws std::invalid_argument if a parameter is out of its range.
+/// \throws std::invalid_argument if a parameter is out of its range, or if `ball_radius`
+///         is given (neighborhoods are set in rings).
 template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename FaceGraph,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -204,6 +205,7 @@ void jet_fitting_curvatures(const FaceGraph& g, const NamedParameters& np = para
   const int rings = choose_parameter(get_parameter(np, internal_np::neighborhood_rings), 1);
   const int max_rings = choose_parameter(get_parameter(np, internal_np::max_neighborhood_rings), rings + 3);
   const double max_condition = choose_parameter(get_parameter(np, internal_np::max_condition_number), 1e3);
+  internal::reject_ball_radius<NamedParameters>("jet_fitting_curvatures");
   const std::string where = "jet_fitting_curvatures: ";
   if (jet_degree < 1 || jet_degree > 4 || monge_degree < 2 || monge_degree > jet_degree)
     throw std::invalid_argument(where + "needs 2 <= monge_degree <= jet_degree <= 4");

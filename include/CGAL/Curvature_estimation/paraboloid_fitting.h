@@ -137,7 +137,8 @@ namespace Curvature_estimation {
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// \throws std::invalid_argument if a parameter is out of its range.
+/// \throws std::invalid_argument if a parameter is out of its range, or if `ball_radius`
+///         is given (neighborhoods are set in rings).
 template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename FaceGraph,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -151,6 +152,7 @@ void paraboloid_fitting_curvatures(const FaceGraph& g,
   using VPM = typename CGAL::GetVertexPointMap<FaceGraph, NamedParameters>::const_type;
 
 
+  internal::reject_ball_radius<NamedParameters>("paraboloid_fitting_curvatures");
   const internal::Platelet_fit_settings settings =
     internal::platelet_fit_settings(np, "paraboloid_fitting_curvatures");
   const Vertex_normal_method normal_method =

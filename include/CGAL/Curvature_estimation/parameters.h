@@ -6,7 +6,9 @@
 // accepts it because it is-a CGAL pack, and its members return the derived type
 // for this package's parameters and for the CGAL parameters the estimators read,
 // so that both kinds chain in any order. The tags live in this package's own
-// namespace so that CGAL 6, which has tags of the same names, does not collide.
+// namespace; on CGAL 6, which defines four of them too, those four are CGAL's own
+// tags, so that one chain serves CGAL 6's interpolated corrected curvatures and
+// this package's estimators alike.
 #ifndef CGAL_CURVATURE_ESTIMATION_PARAMETERS_H
 #define CGAL_CURVATURE_ESTIMATION_PARAMETERS_H
 
@@ -14,16 +16,23 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/version.h>
 
+#include <stdexcept>
+#include <string>
 #include <type_traits>
 
 // X-macro lists: X(tag type, name); the tag's single value and the chaining
 // function share the name, as in CGAL.
-// This package's parameters:
-#define CGAL_CE_PACKAGE_PARAMETERS(X)                                                         \
+// The parameters that CGAL 6 defines too, with the same meaning (CGAL 6's
+// interpolated corrected curvatures): on CGAL 6 they are CGAL's own tags, so that
+// one chain serves CGAL's estimator and ours; on CGAL 5 this package declares them.
+#define CGAL_CE_PARAMETERS_SHARED_WITH_CGAL_6(X)                                      \
   X(vertex_mean_curvature_map_t, vertex_mean_curvature_map)                           \
   X(vertex_Gaussian_curvature_map_t, vertex_Gaussian_curvature_map)                   \
   X(vertex_principal_curvatures_and_directions_map_t,                                 \
     vertex_principal_curvatures_and_directions_map)                                   \
+  X(ball_radius_t, ball_radius)
+// The parameters of this package alone:
+#define CGAL_CE_OWN_PARAMETERS(X)                                                     \
   X(vertex_estimation_status_map_t, vertex_estimation_status_map)                     \
   X(vertex_normal_method_t, vertex_normal_method)                                     \
   X(neighborhood_rings_t, neighborhood_rings)                                         \
@@ -35,6 +44,9 @@
   X(extrapolation_order_t, extrapolation_order)                                       \
   X(jet_degree_t, jet_degree)                                                         \
   X(monge_degree_t, monge_degree)
+#define CGAL_CE_PACKAGE_PARAMETERS(X)        \
+  CGAL_CE_PARAMETERS_SHARED_WITH_CGAL_6(X)   \
+  CGAL_CE_OWN_PARAMETERS(X)
 
 // CGAL's parameters that functions of this package read; re-declared as members
 // so that chaining them never falls back to CGAL's own class.
@@ -50,7 +62,16 @@ namespace Curvature_estimation {
 namespace internal_np {
 
 #define CGAL_CE_DECLARE_TAG(TAG, NAME) enum TAG { NAME };
-CGAL_CE_PACKAGE_PARAMETERS(CGAL_CE_DECLARE_TAG)
+#if CGAL_VERSION_MAJOR >= 6
+#define CGAL_CE_USE_CGAL_TAG(TAG, NAME) \
+  using ::CGAL::internal_np::TAG;       \
+  using ::CGAL::internal_np::NAME;
+CGAL_CE_PARAMETERS_SHARED_WITH_CGAL_6(CGAL_CE_USE_CGAL_TAG)
+#undef CGAL_CE_USE_CGAL_TAG
+#else
+CGAL_CE_PARAMETERS_SHARED_WITH_CGAL_6(CGAL_CE_DECLARE_TAG)
+#endif
+CGAL_CE_OWN_PARAMETERS(CGAL_CE_DECLARE_TAG)
 #undef CGAL_CE_DECLARE_TAG
 
 } // namespace internal_np
@@ -120,44 +141,18 @@ constexpr bool has_parameter()
   return !::CGAL::parameters::is_default_parameter<NamedParameters, Tag>::value;
 }
 
-// The output maps that CGAL 6 also names (CGAL::internal_np::vertex_mean_curvature_map_t
-// and friends): on CGAL 6 a pack built with CGAL's own functions is accepted too.
-// This package's tag wins when both are given.
-// has_NAME<NP>() says whether the output was asked for; get_NAME(np) returns it.
-#if CGAL_VERSION_MAJOR >= 6
-#define CGAL_CE_CGAL6_ALIAS(OURS, THEIRS)                                                       \
-  template <typename NP>                                                                        \
-  constexpr bool has_##OURS()                                                                   \
-  {                                                                                             \
-    return has_parameter<NP, ::CGAL::Curvature_estimation::internal_np::OURS##_t>() ||          \
-           has_parameter<NP, ::CGAL::internal_np::THEIRS##_t>();                                \
-  }                                                                                             \
-  template <typename NP>                                                                        \
-  decltype(auto) get_##OURS(const NP& np)                                                       \
-  {                                                                                             \
-    if constexpr (has_parameter<NP, ::CGAL::Curvature_estimation::internal_np::OURS##_t>())    \
-      return ::CGAL::parameters::get_parameter(np, ::CGAL::Curvature_estimation::internal_np::OURS); \
-    else                                                                                        \
-      return ::CGAL::parameters::get_parameter(np, ::CGAL::internal_np::THEIRS);               \
-  }
-#else
-#define CGAL_CE_CGAL6_ALIAS(OURS, THEIRS)                                                       \
-  template <typename NP>                                                                        \
-  constexpr bool has_##OURS()                                                                   \
-  {                                                                                             \
-    return has_parameter<NP, ::CGAL::Curvature_estimation::internal_np::OURS##_t>();           \
-  }                                                                                             \
-  template <typename NP>                                                                        \
-  decltype(auto) get_##OURS(const NP& np)                                                       \
-  {                                                                                             \
-    return ::CGAL::parameters::get_parameter(np, ::CGAL::Curvature_estimation::internal_np::OURS); \
-  }
-#endif
-CGAL_CE_CGAL6_ALIAS(vertex_mean_curvature_map, vertex_mean_curvature_map)
-CGAL_CE_CGAL6_ALIAS(vertex_Gaussian_curvature_map, vertex_Gaussian_curvature_map)
-CGAL_CE_CGAL6_ALIAS(vertex_principal_curvatures_and_directions_map,
-                    vertex_principal_curvatures_and_directions_map)
-#undef CGAL_CE_CGAL6_ALIAS
+// Radius neighborhoods (CGAL 6's `ball_radius`) are not implemented by this
+// package's estimators: a pack that sets it is refused rather than ignored, so
+// that a chain written for CGAL's interpolated corrected curvatures does not
+// silently give 1-ring estimates here.
+template <typename NamedParameters>
+void reject_ball_radius(const char* caller)
+{
+  if (has_parameter<NamedParameters, internal_np::ball_radius_t>())
+    throw std::invalid_argument(std::string(caller) +
+                                ": ball_radius is not supported; neighborhoods are set in rings "
+                                "(neighborhood_rings)");
+}
 
 } // namespace internal
 } // namespace Curvature_estimation

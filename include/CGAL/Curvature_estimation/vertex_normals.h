@@ -124,7 +124,8 @@ namespace Curvature_estimation {
  *
  * @tparam ConcurrencyTag `CGAL::Sequential_tag` (default), `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`
  *
- * \throws std::invalid_argument if a ring or condition parameter is out of its range.
+ * \throws std::invalid_argument if a ring or condition parameter is out of its range, or if
+ *         `ball_radius` is given (neighborhoods are set in rings).
  */
 template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename FaceGraph,
@@ -148,6 +149,7 @@ void estimate_vertex_normals(const FaceGraph& g,
                                    get_const_property_map(CGAL::vertex_point, g));
   const Vertex_normal_method method =
     choose_parameter(get_parameter(np, internal_np::vertex_normal_method), Vertex_normal_method::quadric_fit);
+  internal::reject_ball_radius<NamedParameters>("estimate_vertex_normals");
   const internal::Platelet_fit_settings settings = internal::platelet_fit_settings(np, "estimate_vertex_normals");
 
   constexpr bool write_status = internal::has_parameter<NamedParameters, internal_np::vertex_estimation_status_map_t>();

@@ -170,6 +170,7 @@ void normal_curvature_sample_curvatures(const FaceGraph& g, const NamedParameter
   using VPM = typename CGAL::GetVertexPointMap<FaceGraph, NamedParameters>::const_type;
   constexpr bool given_normals = has_parameter<NamedParameters, ::CGAL::internal_np::vertex_normal_map_t>();
 
+  reject_ball_radius<NamedParameters>(caller);
   const Platelet_fit_settings settings = platelet_fit_settings(np, caller);
   const Vertex_normal_method method =
     choose_parameter(get_parameter(np, internal_np::vertex_normal_method), Vertex_normal_method::quadric_fit);

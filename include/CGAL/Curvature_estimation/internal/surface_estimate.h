@@ -50,8 +50,8 @@ struct Surface_estimate
 template <typename NamedParameters>
 constexpr bool wants_curvature_output()
 {
-  return has_vertex_principal_curvatures_and_directions_map<NamedParameters>() ||
-         has_vertex_mean_curvature_map<NamedParameters>() || has_vertex_Gaussian_curvature_map<NamedParameters>() ||
+  return has_parameter<NamedParameters, internal_np::vertex_principal_curvatures_and_directions_map_t>() ||
+         has_parameter<NamedParameters, internal_np::vertex_mean_curvature_map_t>() || has_parameter<NamedParameters, internal_np::vertex_Gaussian_curvature_map_t>() ||
          has_parameter<NamedParameters, internal_np::vertex_estimation_status_map_t>();
 }
 
@@ -64,12 +64,12 @@ constexpr bool surface_maps_accessible_concurrently()
   using ::CGAL::parameters::get_parameter;
   const NP* np = nullptr;  // dereferenced in decltype only
   bool all = true;
-  if constexpr (has_vertex_principal_curvatures_and_directions_map<NP>())
-    all = all && accessible_concurrently<decltype(get_vertex_principal_curvatures_and_directions_map(*np))>();
-  if constexpr (has_vertex_mean_curvature_map<NP>())
-    all = all && accessible_concurrently<decltype(get_vertex_mean_curvature_map(*np))>();
-  if constexpr (has_vertex_Gaussian_curvature_map<NP>())
-    all = all && accessible_concurrently<decltype(get_vertex_Gaussian_curvature_map(*np))>();
+  if constexpr (has_parameter<NP, internal_np::vertex_principal_curvatures_and_directions_map_t>())
+    all = all && accessible_concurrently<decltype(get_parameter(*np, internal_np::vertex_principal_curvatures_and_directions_map))>();
+  if constexpr (has_parameter<NP, internal_np::vertex_mean_curvature_map_t>())
+    all = all && accessible_concurrently<decltype(get_parameter(*np, internal_np::vertex_mean_curvature_map))>();
+  if constexpr (has_parameter<NP, internal_np::vertex_Gaussian_curvature_map_t>())
+    all = all && accessible_concurrently<decltype(get_parameter(*np, internal_np::vertex_Gaussian_curvature_map))>();
   if constexpr (has_parameter<NP, internal_np::vertex_estimation_status_map_t>())
     all = all && accessible_concurrently<decltype(get_parameter(*np, internal_np::vertex_estimation_status_map))>();
   if constexpr (has_parameter<NP, ::CGAL::internal_np::vertex_normal_map_t>())
@@ -84,16 +84,16 @@ void put_surface_estimate(const NamedParameters& np, VertexDescriptor v, const S
 {
   using FT = typename GT::FT;
   using Vector_3 = typename GT::Vector_3;
-  if constexpr (has_vertex_principal_curvatures_and_directions_map<NamedParameters>())
-    put(get_vertex_principal_curvatures_and_directions_map(np), v,
+  if constexpr (has_parameter<NamedParameters, internal_np::vertex_principal_curvatures_and_directions_map_t>())
+    put(::CGAL::parameters::get_parameter(np, internal_np::vertex_principal_curvatures_and_directions_map), v,
         Principal_curvatures_and_directions<GT>(
           FT(e.min_curvature), FT(e.max_curvature),
           Vector_3(e.min_direction.x(), e.min_direction.y(), e.min_direction.z()),
           Vector_3(e.max_direction.x(), e.max_direction.y(), e.max_direction.z())));
-  if constexpr (has_vertex_mean_curvature_map<NamedParameters>())
-    put(get_vertex_mean_curvature_map(np), v, FT(0.5 * (e.max_curvature + e.min_curvature)));
-  if constexpr (has_vertex_Gaussian_curvature_map<NamedParameters>())
-    put(get_vertex_Gaussian_curvature_map(np), v, FT(e.gaussian_curvature));
+  if constexpr (has_parameter<NamedParameters, internal_np::vertex_mean_curvature_map_t>())
+    put(::CGAL::parameters::get_parameter(np, internal_np::vertex_mean_curvature_map), v, FT(0.5 * (e.max_curvature + e.min_curvature)));
+  if constexpr (has_parameter<NamedParameters, internal_np::vertex_Gaussian_curvature_map_t>())
+    put(::CGAL::parameters::get_parameter(np, internal_np::vertex_Gaussian_curvature_map), v, FT(e.gaussian_curvature));
   if constexpr (has_parameter<NamedParameters, internal_np::vertex_estimation_status_map_t>())
     put(::CGAL::parameters::get_parameter(np, internal_np::vertex_estimation_status_map), v, e.status);
   (void)np;
