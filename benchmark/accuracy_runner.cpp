@@ -14,13 +14,15 @@
 // h is the mean edge length; region is `all` or `interior` (graphs: the vertices with
 // |x|, |y| <= 0.8, away from the one-sided stencils of the boundary, a fixed part of
 // the domain as h -> 0; closed surfaces: all vertices); quantity is k_max, k_min, H or
-// K; rms and max are over the `count` vertices of the region that have an estimate;
+// K (only those the estimator gives: CGAL's discrete operators give H or K alone);
+// rms and max are over the `count` vertices of the region that have an estimate;
 // `not_estimable` counts the region's vertices without one (left out of the errors).
 // The estimator `paraboloid_given_normals` is given the EXACT normals here: it shows
 // what the fit does when the normals are not the limiting factor.
 //
-// DIR/bunny_mean_curvature.csv (x,y,z and one column of H per estimator) and
+// DIR/bunny_mean_curvature.csv (x,y,z and one column of H per estimator that gives H) and
 // DIR/bunny_faces.csv (three vertex indices per row) for the report's pictures.
+// DIR/cgal_version.txt: the CGAL this runner was compiled against (CGAL_VERSION_STR).
 #include "estimators.h"
 
 #include "estimator_runs.h"
@@ -34,6 +36,7 @@
 #include <iomanip>
 #include <iostream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace {
@@ -127,7 +130,7 @@ std::vector<Series> all_series()
   return series;
 }
 
-void write_rows(std::ostream& out, const Case& c, double h, const char* estimator,
+void write_rows(std::ostream& out, const Case& c, double h, const Estimator_info& estimator,
                 const ce_test::Estimates<Kernel>& e)
 {
   for (const bool interior_only : {false, true}) {
@@ -142,12 +145,17 @@ void write_rows(std::ostream& out, const Case& c, double h, const char* estimato
       return true;
     };
     const ce_test::Curvature_errors errors = ce_test::curvature_errors(e, c.exact, include);
-    const std::pair<const char*, const ce_test::Error_accumulator*> quantities[] = {
-      {"k_max", &errors.k_max}, {"k_min", &errors.k_min}, {"H", &errors.mean}, {"K", &errors.gaussian}};
-    for (const auto& [quantity, accumulator] : quantities) {
+    const std::tuple<const char*, unsigned, const ce_test::Error_accumulator*> quantities[] = {
+      {"k_max", gives_principal, &errors.k_max},
+      {"k_min", gives_principal, &errors.k_min},
+      {"H", gives_H, &errors.mean},
+      {"K", gives_K, &errors.gaussian}};
+    for (const auto& [quantity, given_by, accumulator] : quantities) {
+      if (!(estimator.quantities & given_by))
+        continue;
       const ce_test::Error_stats s = accumulator->stats();
       out << c.surface << ',' << c.mesh << ',' << c.level << ',' << c.soup.points.size() << ',' << h << ','
-          << estimator << ',' << (interior_only ? "interior" : "all") << ',' << quantity << ',' << s.rms << ','
+          << estimator.name << ',' << (interior_only ? "interior" : "all") << ',' << quantity << ',' << s.rms << ','
           << s.max << ',' << s.count << ',' << not_estimable << '\n';
     }
   }
@@ -170,9 +178,9 @@ void run_accuracy(bool quick, const std::string& path)
       Normal_map exact_normals = ce_test::exact_normal_map<Kernel>(mesh, c.exact);
       for (const Estimator_info& info : estimators()) {
         const ce_test::Estimates<Kernel> e = ce_test::run_with_all_outputs<Kernel>(
-          mesh, [&](const Mesh& m, const auto& np) { run<Tag>(info.id, m, exact_normals, np); },
+          mesh, [&](const Mesh& m, const auto& np) { run<Tag>(info.id, m, exact_normals, h, np); },
           CE::parameters::default_values());
-        write_rows(out, c, h, info.name, e);
+        write_rows(out, c, h, info, e);
       }
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::fprintf(stderr, "accuracy: %-22s %-9s level %d: %7zu vertices, %6.2f s\n", c.surface.c_str(),
@@ -186,17 +194,22 @@ void run_bunny(const std::string& dir)
   Mesh mesh = read_real_mesh("bunny00");
   Normal_map normals = mesh.add_property_map<vertex_descriptor, Kernel::Vector_3>("v:given_normal").first;
   CE::estimate_vertex_normals(mesh, normals); // no exact normals on a scanned mesh: the default estimate
-  std::vector<std::vector<double>> columns;
+  const double h = mean_edge_length(mesh);
+  std::vector<const Estimator_info*> with_H;
   for (const Estimator_info& info : estimators())
+    if (info.quantities & gives_H)
+      with_H.push_back(&info);
+  std::vector<std::vector<double>> columns;
+  for (const Estimator_info* info : with_H)
     columns.push_back(ce_test::run_with_all_outputs<Kernel>(
-                        mesh, [&](const Mesh& m, const auto& np) { run<Tag>(info.id, m, normals, np); },
+                        mesh, [&](const Mesh& m, const auto& np) { run<Tag>(info->id, m, normals, h, np); },
                         CE::parameters::default_values())
                         .mean);
 
   std::ofstream vertices_out(dir + "/bunny_mean_curvature.csv");
   vertices_out << std::setprecision(9) << "x,y,z";
-  for (const Estimator_info& info : estimators())
-    vertices_out << ',' << info.name;
+  for (const Estimator_info* info : with_H)
+    vertices_out << ',' << info->name;
   vertices_out << '\n';
   std::size_t i = 0;
   for (vertex_descriptor v : vertices(mesh)) {
@@ -240,6 +253,9 @@ int main(int argc, char** argv)
     }
   }
   try {
+    std::ofstream version(dir + "/cgal_version.txt");
+    if (!(version << CGAL_VERSION_STR << '\n'))
+      throw std::runtime_error("cannot write " + dir + "/cgal_version.txt");
     run_accuracy(quick, dir + "/accuracy.csv");
     run_bunny(dir);
   } catch (const std::exception& e) {

@@ -3,15 +3,17 @@
 // vertex and call (`allocations_per_vertex`, all threads), on Surface_mesh:
 // grids of .1(cos pi x + cos pi y) with about 10k, 100k and 1M vertices and CGAL's
 // bunny, armadillo, elephant and Chinese dragon; sequential and parallel (TBB,
-// at most 2 threads). Benchmark names are ESTIMATOR/MESH/seq|par, which
-// benchmark/make_report.py parses.
+// at most 2 threads; CGAL 6's estimators have no parallel version: sequential only).
+// Benchmark names are ESTIMATOR/MESH/seq|par, which benchmark/make_report.py parses;
+// the JSON context holds `cgal_version`, the CGAL compiled against.
 //
 //   ./build/benchmark/bench_estimators [--quick] [--benchmark_filter=...] [--benchmark_out=f.json ...]
 //
 // --quick: a smoke run on a 2.6k- and a 10k-vertex grid, the bunny and the elephant,
 // with short minimum times and no repetitions. Otherwise every case runs for at least
 // 1 s, or once if one run takes longer (jet fitting on 1M vertices: tens of seconds),
-// and most cases are repeated 3 times; the full run takes about 15 minutes on two cores.
+// and most cases are repeated 3 times; the full run takes about 15 minutes on two cores
+// (a few more with CGAL 6's estimators).
 #include "estimators.h"
 
 #include "test_surfaces.h"
@@ -87,32 +89,39 @@ struct Input
   int grid_n;       // 0 for a real mesh
 };
 
+struct Built_input
+{
+  Mesh mesh;
+  double h; // its mean edge length
+};
+
 // Inputs are built on first use and kept for the process: the 1M-vertex grid takes
 // seconds to build, longer than the fast estimators take to run on it.
-Mesh& mesh_of(const Input& input)
+Built_input& built(const Input& input)
 {
-  static std::map<std::string, std::unique_ptr<Mesh>> cache;
-  std::unique_ptr<Mesh>& mesh = cache[input.name];
-  if (!mesh) {
-    if (input.grid_n > 0)
-      mesh = std::make_unique<Mesh>(ce_test::to_mesh<Mesh>(ce_test::grid_graph_soup(
-        ce_test::hamann_table1_functions()[8], static_cast<std::size_t>(input.grid_n))));
-    else
-      mesh = std::make_unique<Mesh>(read_real_mesh(input.name));
+  static std::map<std::string, std::unique_ptr<Built_input>> cache;
+  std::unique_ptr<Built_input>& b = cache[input.name];
+  if (!b) {
+    Mesh mesh = input.grid_n > 0 ? ce_test::to_mesh<Mesh>(ce_test::grid_graph_soup(
+                                     ce_test::hamann_table1_functions()[8], static_cast<std::size_t>(input.grid_n)))
+                                 : read_real_mesh(input.name);
+    const double h = mean_edge_length(mesh);
+    b = std::make_unique<Built_input>(Built_input{std::move(mesh), h});
   }
-  return *mesh;
+  return *b;
 }
 
 template <typename ConcurrencyTag>
 void time_estimator(benchmark::State& state, Estimator estimator, const Input& input)
 {
-  Mesh* mesh = nullptr;
+  Built_input* b = nullptr;
   try {
-    mesh = &mesh_of(input);
+    b = &built(input);
   } catch (const std::exception& e) {
     state.SkipWithError(e.what());
     return;
   }
+  Mesh* mesh = &b->mesh;
   auto mean = mesh->add_property_map<vertex_descriptor, double>("v:bench_H").first;
   auto gaussian = mesh->add_property_map<vertex_descriptor, double>("v:bench_K").first;
   auto principal =
@@ -126,7 +135,7 @@ void time_estimator(benchmark::State& state, Estimator estimator, const Input& i
                          .vertex_principal_curvatures_and_directions_map(principal);
   const unsigned long long allocations_before = heap_allocations();
   for (auto _ : state) {
-    run<ConcurrencyTag>(estimator, *mesh, given, outputs);
+    run<ConcurrencyTag>(estimator, *mesh, given, b->h, outputs);
     benchmark::DoNotOptimize(mean[*vertices(*mesh).begin()]);
     benchmark::ClobberMemory();
   }
@@ -144,6 +153,26 @@ void time_estimator(benchmark::State& state, Estimator estimator, const Input& i
   mesh->remove_property_map(given);
 }
 
+// The machine is shared: make_report.py takes the best of the repetitions, the least
+// disturbed run. These estimators run once: jet fitting with 1 ring and with d = 4 takes
+// minutes on the 1M grid, ICC with a ball radius seconds (a breadth-first search with a
+// hash set per vertex). The 2-ring jet and ICC's defaults are repeated like the paraboloid
+// fit, as the report divides them by it.
+bool runs_once(Estimator e)
+{
+  switch (e) {
+    case Estimator::jet_d2_1ring:
+    case Estimator::jet_d4_3rings:
+#if CGAL_VERSION_MAJOR >= 6
+    case Estimator::icc_ball_1h:
+    case Estimator::icc_ball_2h:
+#endif
+      return true;
+    default:
+      return false;
+  }
+}
+
 void register_all(bool quick)
 {
   std::vector<Input> inputs;
@@ -157,13 +186,7 @@ void register_all(bool quick)
       inputs.push_back({name, 0});
   }
   const double min_time = quick ? 0.05 : 1.0;
-  // The machine is shared: make_report.py takes the best of the repetitions, the least
-  // disturbed run. Jet fitting with 1 ring and with d = 4 runs once (it takes minutes on
-  // the 1M grid); the 2-ring jet is repeated like the paraboloid fit, as the report
-  // divides one by the other.
-  const auto repetitions = [quick](Estimator e) {
-    return quick || e == Estimator::jet_d2_1ring || e == Estimator::jet_d4_3rings ? 1 : 3;
-  };
+  const auto repetitions = [quick](Estimator e) { return quick || runs_once(e) ? 1 : 3; };
 
   for (const Input& input : inputs)
     for (const Estimator_info& e : estimators()) {
@@ -176,6 +199,8 @@ void register_all(bool quick)
         ->Repetitions(repetitions(e.id))
         ->DisplayAggregatesOnly(true); // the JSON file still has every repetition
 #ifdef CGAL_LINKED_WITH_TBB
+      if (!e.parallel)
+        continue;
       benchmark::RegisterBenchmark((base + "/par").c_str(),
                                    [e, input](benchmark::State& s) { time_estimator<CGAL::Parallel_tag>(s, e.id, input); })
         ->Unit(benchmark::kMillisecond)
@@ -211,6 +236,7 @@ int main(int argc, char** argv)
     return 1;
   benchmark::AddCustomContext("quick", quick ? "yes" : "no");
   benchmark::AddCustomContext("parallel_threads", std::to_string(parallel_threads));
+  benchmark::AddCustomContext("cgal_version", CGAL_VERSION_STR);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

@@ -2,18 +2,28 @@
 // place: the speed benchmark (bench_estimators.cpp) and the accuracy runner
 // (accuracy_runner.cpp) both iterate over `estimators()`, so that a variant added
 // here shows up in every table and plot of benchmark/REPORT.md under the same name.
+// Configured against CGAL 6 or later, the list also holds CGAL's own curvature
+// estimators (interpolated corrected curvatures, the discrete operators).
 #ifndef CE_BENCHMARK_ESTIMATORS_H
 #define CE_BENCHMARK_ESTIMATORS_H
 
 #include <CGAL/Curvature_estimation.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/version.h>
+
+#if CGAL_VERSION_MAJOR >= 6
+#include <CGAL/Polygon_mesh_processing/curvature.h>
+#include <CGAL/Polygon_mesh_processing/interpolated_corrected_curvatures.h>
+#endif
 
 #include <array>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace ce_bench {
 
@@ -35,7 +45,24 @@ enum class Estimator
   chen_schmitt,
   jet_d2_1ring,
   jet_d2_2rings,
-  jet_d4_3rings
+  jet_d4_3rings,
+#if CGAL_VERSION_MAJOR >= 6
+  icc,                // CGAL::Polygon_mesh_processing::interpolated_corrected_curvatures, its defaults
+  icc_ball_1h,        // the same with ball_radius = 1 mean edge length
+  icc_ball_2h,        // the same with ball_radius = 2 mean edge lengths
+  icc_our_normals,    // the same given our default normals (estimated in the same call)
+  discrete_mean,      // CGAL::Polygon_mesh_processing::discrete_mean_curvatures: H only
+  discrete_Gaussian,  // CGAL::Polygon_mesh_processing::discrete_Gaussian_curvatures: K only
+#endif
+};
+
+/// The quantities an estimator gives (a bit set); the others are neither measured nor reported.
+enum Quantities : unsigned
+{
+  gives_principal = 1, // k_max, k_min and the principal directions
+  gives_H = 2,
+  gives_K = 4,
+  gives_all = gives_principal | gives_H | gives_K
 };
 
 struct Estimator_info
@@ -43,11 +70,13 @@ struct Estimator_info
   Estimator id;
   const char* name;  // identifier in benchmark names and CSV/JSON files (no spaces, no '/')
   const char* label; // for the report's tables and legends
+  unsigned quantities = gives_all;
+  bool parallel = true; // has a parallel version (CGAL::Parallel_tag); CGAL 6's estimators have none
 };
 
-inline const std::array<Estimator_info, 11>& estimators()
+inline const std::vector<Estimator_info>& estimators()
 {
-  static const std::array<Estimator_info, 11> all = {{
+  static const std::vector<Estimator_info> all = {
     {Estimator::paraboloid, "paraboloid", "paraboloid (default normals)"},
     {Estimator::paraboloid_area_normals, "paraboloid_area_normals", "paraboloid (area normals)"},
     {Estimator::paraboloid_given_normals, "paraboloid_given_normals", "paraboloid (given normals)"},
@@ -59,19 +88,88 @@ inline const std::array<Estimator_info, 11>& estimators()
     {Estimator::jet_d2_1ring, "jet_d2_1ring", "jet d=2, 1 ring"},
     {Estimator::jet_d2_2rings, "jet_d2_2rings", "jet d=2, 2 rings"},
     {Estimator::jet_d4_3rings, "jet_d4_3rings", "jet d=4, 3 rings"},
-  }};
+#if CGAL_VERSION_MAJOR >= 6
+    {Estimator::icc, "icc", "ICC (defaults)", gives_all, false},
+    {Estimator::icc_ball_1h, "icc_ball_1h", "ICC, ball radius 1 h", gives_all, false},
+    {Estimator::icc_ball_2h, "icc_ball_2h", "ICC, ball radius 2 h", gives_all, false},
+    {Estimator::icc_our_normals, "icc_our_normals", "ICC (our normals, timed)", gives_all, false},
+    {Estimator::discrete_mean, "discrete_mean", "CGAL discrete H (cotangent)", gives_H, false},
+    {Estimator::discrete_Gaussian, "discrete_Gaussian", "CGAL discrete K (angle defect)", gives_K, false},
+#endif
+  };
   return all;
 }
 
-inline bool is_jet(Estimator e)
+/// Mean length of the edges of `mesh`, the h of the ICC ball radii.
+inline double mean_edge_length(const Mesh& mesh)
 {
-  return e == Estimator::jet_d2_1ring || e == Estimator::jet_d2_2rings || e == Estimator::jet_d4_3rings;
+  double sum = 0.0;
+  for (Mesh::Edge_index edge : edges(mesh))
+    sum += CGAL::Polygon_mesh_processing::edge_length(edge, mesh);
+  return sum / static_cast<double>(num_edges(mesh));
 }
 
+#if CGAL_VERSION_MAJOR >= 6
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+/// A writable map of CGAL's principal curvatures and directions that stores them, field
+/// by field, into `ours`, a map of this package's type.
+template <typename OurMap>
+struct Principal_map_from_CGAL
+{
+  using key_type = vertex_descriptor;
+  using value_type = PMP::Principal_curvatures_and_directions<Kernel>;
+  using reference = value_type;
+  using category = boost::writable_property_map_tag;
+
+  OurMap ours;
+
+  friend void put(const Principal_map_from_CGAL& map, vertex_descriptor v, const value_type& p)
+  {
+    put(map.ours, v,
+        CE::Principal_curvatures_and_directions<Kernel>(p.min_curvature, p.max_curvature, p.min_direction,
+                                                        p.max_direction));
+  }
+};
+
+// The output maps of `np`, which must hold them (the benchmark always asks for all three).
+template <typename NamedParameters>
+auto mean_curvature_map(const NamedParameters& np)
+{
+  return CGAL::parameters::get_parameter(np, CE::internal_np::vertex_mean_curvature_map);
+}
+template <typename NamedParameters>
+auto Gaussian_curvature_map(const NamedParameters& np)
+{
+  return CGAL::parameters::get_parameter(np, CE::internal_np::vertex_Gaussian_curvature_map);
+}
+template <typename NamedParameters>
+auto principal_curvatures_map(const NamedParameters& np)
+{
+  return CGAL::parameters::get_parameter(np, CE::internal_np::vertex_principal_curvatures_and_directions_map);
+}
+
+/// CGAL's interpolated corrected curvatures with the three output maps of `np` and
+/// `settings` (ball radius, normals): a fresh CGAL pack, never our own parameters.
+/// With outward normals CGAL's H, K and principal curvatures already follow our
+/// convention (1/r, 1/r^2 and 1/r on a sphere of radius r).
+template <typename NamedParameters, typename CGALParameters>
+void run_icc(const Mesh& mesh, const NamedParameters& np, const CGALParameters& settings)
+{
+  using Our_principal_map = decltype(principal_curvatures_map(np));
+  PMP::interpolated_corrected_curvatures(
+    mesh, settings.vertex_mean_curvature_map(mean_curvature_map(np))
+            .vertex_Gaussian_curvature_map(Gaussian_curvature_map(np))
+            .vertex_principal_curvatures_and_directions_map(
+              Principal_map_from_CGAL<Our_principal_map>{principal_curvatures_map(np)}));
+}
+#endif
+
 /// Runs estimator `e` on `mesh` with the outputs (and any other parameters) of `np`.
-/// `given_normals` is read by `paraboloid_given_normals` only.
+/// `given_normals` is read by `paraboloid_given_normals` only, `h` (the mean edge
+/// length of `mesh`) by the ICC ball radii only.
 template <typename ConcurrencyTag, typename NamedParameters>
-void run(Estimator e, const Mesh& mesh, Normal_map given_normals, const NamedParameters& np)
+void run(Estimator e, const Mesh& mesh, Normal_map given_normals, double h, const NamedParameters& np)
 {
   switch (e) {
     case Estimator::paraboloid:
@@ -108,6 +206,32 @@ void run(Estimator e, const Mesh& mesh, Normal_map given_normals, const NamedPar
     case Estimator::jet_d4_3rings:
       CE::jet_fitting_curvatures<ConcurrencyTag>(mesh, np.jet_degree(4).neighborhood_rings(3));
       return;
+#if CGAL_VERSION_MAJOR >= 6
+    case Estimator::icc:
+      run_icc(mesh, np, CGAL::parameters::default_values());
+      return;
+    case Estimator::icc_ball_1h:
+      run_icc(mesh, np, CGAL::parameters::ball_radius(h));
+      return;
+    case Estimator::icc_ball_2h:
+      run_icc(mesh, np, CGAL::parameters::ball_radius(2 * h));
+      return;
+    case Estimator::icc_our_normals: {
+      // Estimated here, so timed with ICC: ICC's default estimates its own normals too.
+      auto normals = get(CGAL::dynamic_vertex_property_t<Kernel::Vector_3>(), mesh);
+      CE::estimate_vertex_normals<ConcurrencyTag>(mesh, normals);
+      run_icc(mesh, np, CGAL::parameters::vertex_normal_map(normals));
+      return;
+    }
+    case Estimator::discrete_mean:
+      // CGAL gives |H| (norm of the cotangent Laplacian over 4 mixed Voronoi areas): 1/r on a sphere, but unsigned.
+      PMP::discrete_mean_curvatures(mesh, mean_curvature_map(np));
+      return;
+    case Estimator::discrete_Gaussian:
+      // CGAL gives the angle defect over the mixed Voronoi area: K, 1/r^2 on a sphere.
+      PMP::discrete_Gaussian_curvatures(mesh, Gaussian_curvature_map(np));
+      return;
+#endif
   }
   throw std::logic_error("ce_bench::run: unknown estimator");
 }
