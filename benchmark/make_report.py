@@ -32,8 +32,10 @@ from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
-# Estimators in report order, with labels; must match benchmark/estimators.h.
-ESTIMATORS = [
+# Estimators in report order, with labels; must match benchmark/estimators.h. The report shows
+# those the run measured (ESTIMATORS, set by select_estimators): CGAL 6's only when the programs
+# were built against CGAL 6.
+ALL_ESTIMATORS = [
     ("paraboloid", "paraboloid (default normals)"),
     ("paraboloid_area_normals", "paraboloid (area normals)"),
     ("paraboloid_given_normals", "paraboloid (given normals)"),
@@ -45,15 +47,44 @@ ESTIMATORS = [
     ("jet_d2_1ring", "jet d=2, 1 ring"),
     ("jet_d2_2rings", "jet d=2, 2 rings"),
     ("jet_d4_3rings", "jet d=4, 3 rings"),
+    ("icc", "ICC (defaults)"),
+    ("icc_ball_1h", "ICC, ball radius 1 h"),
+    ("icc_ball_2h", "ICC, ball radius 2 h"),
+    ("icc_our_normals", "ICC (our normals, timed)"),
+    ("discrete_mean", "CGAL discrete H (cotangent)"),
+    ("discrete_Gaussian", "CGAL discrete K (angle defect)"),
 ]
-LABEL = dict(ESTIMATORS)
+LABEL = dict(ALL_ESTIMATORS)
+ESTIMATORS = ALL_ESTIMATORS
+# CGAL 6's own estimators (Polygon_mesh_processing): sequential only.
+CGAL6 = {"icc", "icc_ball_1h", "icc_ball_2h", "icc_our_normals", "discrete_mean", "discrete_Gaussian"}
 
 
-def style(i):
-    """Line style of the i-th estimator, the same in every plot: tab10 has 10 colours for 11
-    estimators, so the jets are also dashed and every line has its own marker."""
-    return {"color": "k" if i == 10 else plt.get_cmap("tab10")(i), "marker": "os^vD<>pPX*"[i],
-            "ls": "--" if ESTIMATORS[i][0].startswith("jet") else "-"}
+def is_ours(e):
+    """Our code, not CGAL's (jet fitting is CGAL's Monge_via_jet_fitting behind our interface)."""
+    return not e.startswith("jet") and e not in CGAL6
+
+
+def select_estimators(speed, rows):
+    """Keeps in ESTIMATORS the estimators that the speed or the accuracy run measured."""
+    global ESTIMATORS
+    measured = {e for (e, _, _) in speed} | {r["estimator"] for r in rows}
+    ESTIMATORS = [(e, label) for e, label in ALL_ESTIMATORS if e in measured]
+
+
+def style(e):
+    """Line style of estimator e, the same in every plot: tab10 has 10 colours for our 8
+    estimators and CGAL's 3 jets (the 11th is black), CGAL 6's estimators take Dark2's;
+    the jets are also dashed, CGAL 6's dash-dotted, and every line has its own marker."""
+    i = [name for name, _ in ALL_ESTIMATORS].index(e)
+    if e in CGAL6:
+        color = plt.get_cmap("Dark2")([name for name, _ in ALL_ESTIMATORS if name in CGAL6].index(e))
+    else:
+        color = "k" if i == 10 else plt.get_cmap("tab10")(i)
+    return {"color": color, "marker": "os^vD<>pPX*hH8d+x"[i],
+            "ls": "--" if e.startswith("jet") else "-." if e in CGAL6 else "-"}
+
+
 QUANTITIES = ["k_max", "k_min", "H", "K"]
 
 # The targets of the project's issue 5.
@@ -80,7 +111,26 @@ def run(cmd):
         return ""
 
 
-def machine(build_dir, bench_context):
+def cgal_used(build_dir, bench_context, accuracy_dir):
+    """The CGAL the programs were compiled against (CGAL_VERSION_STR, recorded by both) and
+    the CGAL_DIR of the build."""
+    speed = bench_context.get("cgal_version")
+    path = os.path.join(accuracy_dir, "cgal_version.txt")
+    accuracy = open(path).read().strip() if os.path.exists(path) else None
+    if speed and accuracy and speed != accuracy:
+        version = "speed %s, accuracy %s" % (speed, accuracy)
+    else:
+        version = speed or accuracy or "unknown"
+    cache_path = os.path.join(build_dir, "CMakeCache.txt")
+    if os.path.exists(cache_path):
+        for line in open(cache_path):
+            m = re.match(r"^CGAL_DIR:[A-Z]+=(.*)$", line)
+            if m:
+                return "%s (CGAL_DIR = `%s`)" % (version, m.group(1))
+    return version
+
+
+def machine(build_dir, bench_context, accuracy_dir):
     lscpu = run(["lscpu"])
     cpu = re.search(r"^Model name:\s*(.+)$", lscpu, re.M)
     cache = {}
@@ -91,7 +141,6 @@ def machine(build_dir, bench_context):
             if m:
                 cache[m.group(1)] = m.group(2)
     compiler = run([cache.get("CMAKE_CXX_COMPILER", "c++"), "--version"]).splitlines()
-    cgal = run(["grep", "-m1", "define CGAL_VERSION ", "/usr/include/CGAL/version.h"]).split()
     return {
         # When the speed benchmarks ran (Google Benchmark's context), not when this script ran.
         "Date": bench_context.get("date") or datetime.datetime.now().strftime("%Y-%m-%d %H:%M"),
@@ -103,7 +152,7 @@ def machine(build_dir, bench_context):
             "%.0f%%" % (100 * bench_context["core_share"]) if "core_share" in bench_context else "unknown",
         "Compiler": compiler[0] if compiler else "unknown",
         "Build type": "%s (%s)" % (cache.get("CMAKE_BUILD_TYPE", "?"), cache.get("CMAKE_CXX_FLAGS_RELEASE", "")),
-        "CGAL": cgal[-1] if cgal else "unknown",
+        "CGAL": cgal_used(build_dir, bench_context, accuracy_dir),
         # Debian's libbenchmark calls itself a debug build: that is the timing harness only,
         # the estimators are compiled with the build type above.
         "Google Benchmark library build (harness only)": bench_context.get("library_build_type", "unknown"),
@@ -205,6 +254,14 @@ def speed_section(speed, figures, quick):
                  "`par` is `CGAL::Parallel_tag` with at most 2 TBB threads; speed-up = seq / par. "
                  "The \"given normals\" variant gets precomputed normals (not timed). Best of 3 repetitions "
                  "(jet d=2 1 ring and jet d=4: one; quick runs: one), each of at least 1 s or one call.")
+    if any(e in CGAL6 for e, _ in ESTIMATORS):
+        lines.append("")
+        lines.append("CGAL 6's estimators have no parallel version: sequential only. ICC is "
+                     "`CGAL::Polygon_mesh_processing::interpolated_corrected_curvatures`: with its defaults "
+                     "(CGAL's `compute_vertex_normals`, the faces around the vertex), with `ball_radius` of 1 and "
+                     "2 h (h = the mesh's mean edge length, computed once per mesh, not timed; one repetition), and "
+                     "with our default normals (`estimate_vertex_normals`, timed with ICC). The discrete operators are "
+                     "`discrete_mean_curvatures` (H only) and `discrete_Gaussian_curvatures` (K only).")
     lines.append("")
     header = ["estimator"] + ["%s (%s v)" % (m, "{:,}".format(vertices[m])) for m in meshes]
     for mode, title in (("seq", "sequential"), ("par", "parallel, 2 threads")):
@@ -234,25 +291,27 @@ def speed_section(speed, figures, quick):
                 row.append("%s / %s" % (fmt_count(a), fmt_count(b)))
             rows.append(row)
         lines += [table(header, rows), ""]
-    lines += ["### Jet fitting (d=2, 2 rings) / paraboloid (default normals), same run", ""]
+    lines += ["### CGAL's estimators / paraboloid (default normals), same run", ""]
     rows = []
-    for mode in ("seq", "par"):
-        row = [mode]
+    for e, mode in (("jet_d2_2rings", "seq"), ("jet_d2_2rings", "par"), ("icc", "seq"), ("icc_our_normals", "seq")):
+        if e not in dict(ESTIMATORS):
+            continue
+        row = [LABEL[e], mode]
         for m in meshes:
-            j, p = speed.get(("jet_d2_2rings", m, mode)), speed.get(("paraboloid", m, mode))
-            row.append("%.1f" % (j[0] / p[0]) if j and p else "—")
+            c, p = speed.get((e, m, mode)), speed.get(("paraboloid", m, mode))
+            row.append("%.1f" % (c[0] / p[0]) if c and p else "—")
         rows.append(row)
-    lines += [table(["mode"] + meshes, rows), ""]
+    lines += [table(["estimator", "mode"] + meshes, rows), ""]
 
     # Figures: ns/vertex against grid size (scaling), and bars on the real meshes.
     grids = [m for m in meshes if m.startswith("grid_")]
     real = [m for m in meshes if not m.startswith("grid_")]
     fig, axes = plt.subplots(1, 2, figsize=(14, 5.5))
     for ax, mode in zip(axes, ("seq", "par")):
-        for i, (e, label) in enumerate(ESTIMATORS):
+        for e, label in ESTIMATORS:
             pts = [(vertices[m], speed[(e, m, mode)][0]) for m in grids if (e, m, mode) in speed]
             if pts:
-                ax.plot(*zip(*pts), label=label, **style(i))
+                ax.plot(*zip(*pts), label=label, **style(e))
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("vertices (grid)")
@@ -323,8 +382,12 @@ def targets_section(speed, quick):
     speedup = p_seq / p_par if p_seq and p_par else None
     rows.append(["parallel speed-up, 2 threads, %s (paraboloid)" % large, "≥ %g×" % TARGET_SPEEDUP,
                  "%.2f×" % speedup if speedup else "—", met(speedup is not None and speedup >= TARGET_SPEEDUP)])
+    icc = ns("icc", large, "seq")
+    if icc is not None:
+        rows.append(["ICC (defaults) / paraboloid (default), %s, 1 thread" % large, "— (for information)",
+                     "%.2f×" % (icc / p_seq) if p_seq else "—", "—"])
     ours = [(ALLOCATIONS[(e, large, mode)], e, mode) for e, _ in ESTIMATORS for mode in ("seq", "par")
-            if not e.startswith("jet") and (e, large, mode) in ALLOCATIONS]
+            if is_ours(e) and (e, large, mode) in ALLOCATIONS]
     if ours:
         worst = max(ours)
         rows.append(["heap allocations per vertex, our estimators, %s" % large,
@@ -412,8 +475,17 @@ def accuracy_section(rows, figures):
                  "the two finest meshes, from the RMS error. `interior`: graph vertices with |x|, |y| ≤ 0.8 "
                  "(closed surfaces: all vertices). In this section the \"given normals\" variant of the paraboloid "
                  "fit is given the **exact** normals. Vertices an estimator cannot estimate are left out of its "
-                 "errors and counted in the detailed tables.")
+                 "errors and counted in the detailed tables. A dash: a quantity the estimator does not give, "
+                 "or an order that cannot be measured.")
     lines.append("")
+    if any(e in CGAL6 for e, _ in ESTIMATORS):
+        lines.append("CGAL 6's estimators: \"ICC (our normals)\" gets our default normal estimate, not the exact "
+                     "normals. CGAL's discrete H (`discrete_mean_curvatures`) is **unsigned**: it returns |H|, the norm "
+                     "of the cotangent Laplacian over four mixed Voronoi areas (1/r on a sphere of radius r), so "
+                     "where the exact H is negative its error is 2|H| and says nothing of its accuracy; its discrete K "
+                     "is the angle defect over the mixed Voronoi area. CGAL does not define either at border "
+                     "vertices: on the graphs, read the interior.")
+        lines.append("")
 
     # Headline: median order over the surfaces, regular against irregular meshes.
     lines += ["### Observed orders in brief: median over the surfaces", ""]
@@ -469,13 +541,13 @@ def accuracy_section(rows, figures):
         for col, m in enumerate(mesh_types):
             for row, quantity in enumerate(("H", "K")):
                 ax = axes[row][col]
-                for i, (e, label) in enumerate(ESTIMATORS):
+                for e, label in ESTIMATORS:
                     lv = [r for r in series.get((s, m, e, region, quantity), []) if r["count"] and r["rms"] > ROUNDING]
                     if not lv:
                         continue
                     p = order_of(lv)
                     ax.plot([r["h"] for r in lv], [r["rms"] for r in lv], ms=4,
-                            label="%s (%s)" % (label, fmt_order(p)), **style(i))
+                            label="%s (%s)" % (label, fmt_order(p)), **style(e))
                 ax.set_xscale("log")
                 ax.set_yscale("log")
                 ax.set_title("%s, %s: %s (%s)" % (s, m, quantity, region), fontsize=9)
@@ -514,7 +586,8 @@ def accuracy_section(rows, figures):
                         last = lv[-1] if lv else None
                         row += [fmt_e(last["rms"] if last else None), fmt_e(last["max"] if last else None),
                                 fmt_order(order_of(lv))]
-                        failed = last["not_estimable"] if last else 0
+                        if last:
+                            failed = last["not_estimable"]
                     row.append(str(failed))
                     out.append(row)
                 lines += [table(header, out), ""]
@@ -597,13 +670,14 @@ def main():
     os.makedirs(figures, exist_ok=True)
     speed, context = read_speed(args.bench_json)
     rows = read_accuracy(os.path.join(args.accuracy_dir, "accuracy.csv"))
+    select_estimators(speed, rows)
 
     lines = ["# Curvature estimation: speed and accuracy report", ""]
     lines += ["Generated by `scripts/make_report.sh%s` — do not edit by hand." % (" --quick" if args.quick else ""), ""]
     if args.quick:
         lines += ["> **Quick (smoke) run**: small meshes and short timings; not the report's real numbers.", ""]
     lines += ["## Machine", ""]
-    info = machine(args.build_dir, context)
+    info = machine(args.build_dir, context, args.accuracy_dir)
     if args.duration:
         info["Pipeline duration"] = args.duration
     lines += [table(["", ""], [[k, v] for k, v in info.items()]), ""]
