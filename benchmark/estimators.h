@@ -112,26 +112,6 @@ inline double mean_edge_length(const Mesh& mesh)
 #if CGAL_VERSION_MAJOR >= 6
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-/// A writable map of CGAL's principal curvatures and directions that stores them, field
-/// by field, into `ours`, a map of this package's type.
-template <typename OurMap>
-struct Principal_map_from_CGAL
-{
-  using key_type = vertex_descriptor;
-  using value_type = PMP::Principal_curvatures_and_directions<Kernel>;
-  using reference = value_type;
-  using category = boost::writable_property_map_tag;
-
-  OurMap ours;
-
-  friend void put(const Principal_map_from_CGAL& map, vertex_descriptor v, const value_type& p)
-  {
-    put(map.ours, v,
-        CE::Principal_curvatures_and_directions<Kernel>(p.min_curvature, p.max_curvature, p.min_direction,
-                                                        p.max_direction));
-  }
-};
-
 // The output maps of `np`, which must hold them (the benchmark always asks for all three).
 template <typename NamedParameters>
 auto mean_curvature_map(const NamedParameters& np)
@@ -143,25 +123,20 @@ auto Gaussian_curvature_map(const NamedParameters& np)
 {
   return CGAL::parameters::get_parameter(np, CE::internal_np::vertex_Gaussian_curvature_map);
 }
-template <typename NamedParameters>
-auto principal_curvatures_map(const NamedParameters& np)
-{
-  return CGAL::parameters::get_parameter(np, CE::internal_np::vertex_principal_curvatures_and_directions_map);
-}
 
-/// CGAL's interpolated corrected curvatures with the three output maps of `np` and
-/// `settings` (ball radius, normals): a fresh CGAL pack, never our own parameters.
-/// With outward normals CGAL's H, K and principal curvatures already follow our
-/// convention (1/r, 1/r^2 and 1/r on a sphere of radius r).
+/// CGAL's interpolated corrected curvatures with the three output maps of `np` (on CGAL 6
+/// our Principal_curvatures_and_directions is CGAL's) and `settings` (ball radius,
+/// normals): a fresh CGAL pack, never our own parameters. With outward normals CGAL's H,
+/// K and principal curvatures already follow our convention (1/r, 1/r^2 and 1/r on a
+/// sphere of radius r).
 template <typename NamedParameters, typename CGALParameters>
 void run_icc(const Mesh& mesh, const NamedParameters& np, const CGALParameters& settings)
 {
-  using Our_principal_map = decltype(principal_curvatures_map(np));
   PMP::interpolated_corrected_curvatures(
     mesh, settings.vertex_mean_curvature_map(mean_curvature_map(np))
             .vertex_Gaussian_curvature_map(Gaussian_curvature_map(np))
-            .vertex_principal_curvatures_and_directions_map(
-              Principal_map_from_CGAL<Our_principal_map>{principal_curvatures_map(np)}));
+            .vertex_principal_curvatures_and_directions_map(CGAL::parameters::get_parameter(
+              np, CE::internal_np::vertex_principal_curvatures_and_directions_map)));
 }
 #endif
 
