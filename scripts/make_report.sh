@@ -9,21 +9,39 @@
 #                                     BUILD/report_quick/REPORT.md, so that the committed
 #                                     report is never replaced by smoke numbers
 #
-# Environment: CE_BUILD_DIR (default: build), CE_JOBS (parallel compile jobs, default 2).
+# The CGAL: CGAL_DIR=<dir of CGALConfig.cmake> scripts/make_report.sh uses that one; without
+# CGAL_DIR, ../shared/cgal-6.1.1/lib/cmake/CGAL (beside the repository) when it exists - the
+# committed report is generated against CGAL 6.1.1, whose own estimators (ICC, the discrete
+# operators) it then includes - else the system's CGAL (Debian's 5.5).
+# Environment: CGAL_DIR, CE_BUILD_DIR (default: build-report, the report's own build
+# directory, configured with the CGAL chosen above at every run; not the tests' build/),
+# CE_JOBS (parallel compile jobs, default 2).
 # Raw outputs (speed.json, accuracy.csv, the bunny's CSVs) stay in BUILD/report[_quick]/.
 set -euo pipefail
 
+# A relative CGAL_DIR is relative to where the script was started.
+cgal_dir="${CGAL_DIR:+$(cd "$CGAL_DIR" && pwd)}"
 cd "$(dirname "$0")/.."
 quick=()
 for arg in "$@"; do
   case "$arg" in
     --quick) quick=(--quick) ;;
-    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,19p' "$0"; exit 0 ;;
     *) echo "make_report: unknown argument '$arg' (expected --quick)" >&2; exit 2 ;;
   esac
 done
 
-build="${CE_BUILD_DIR:-build}"
+shared_cgal=../shared/cgal-6.1.1/lib/cmake/CGAL
+if [ -z "$cgal_dir" ] && [ -d "$shared_cgal" ]; then
+  cgal_dir="$(cd "$shared_cgal" && pwd)"
+fi
+if [ -n "$cgal_dir" ]; then
+  cgal=(-DCGAL_DIR="$cgal_dir")
+else
+  cgal=(-UCGAL_DIR) # the system's CGAL, also where an earlier run cached another one
+fi
+
+build="${CE_BUILD_DIR:-build-report}"
 jobs="${CE_JOBS:-2}"
 if [ ${#quick[@]} -gt 0 ]; then
   raw="$build/report_quick"
@@ -38,9 +56,10 @@ step() { echo "== make_report [$(( $(date +%s) - start )) s]: $*" >&2; }
 step "dependencies"
 bash scripts/install_dependencies.sh --report
 
-step "configure and build ($build, Release, -j$jobs)"
+step "configure and build ($build, Release, -j$jobs, CGAL: ${cgal_dir:-the system one})"
 mkdir -p "$build"
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCE_BUILD_BENCHMARKS=ON > "$build/make_report_configure.log" 2>&1 ||
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCE_BUILD_BENCHMARKS=ON -DCE_BUILD_TESTS=OFF \
+  -DCE_BUILD_EXAMPLES=OFF -DCE_BUILD_TOOLS=OFF "${cgal[@]}" > "$build/make_report_configure.log" 2>&1 ||
   { cat "$build/make_report_configure.log" >&2; exit 1; }
 cmake --build "$build" --target accuracy_runner bench_estimators -j "$jobs"
 mkdir -p "$raw"
