@@ -283,7 +283,7 @@ TEST(Gauss_map, RandomPolynomialFansReproduceTheReferenceMedians)
   constexpr double pi = ce_test::pi;
   const auto start = std::chrono::steady_clock::now();
   std::mt19937 gen(20050901);
-  auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * ce_test::uniform01(gen); };
+  auto uniform = [&](double lo, double hi) { return ce_test::uniform(gen, lo, hi); };
   auto uniform_int = [&](int lo, int hi) { return lo + std::min(hi - lo, int((hi - lo + 1) * ce_test::uniform01(gen))); };
 
   enum Setting { taubin_area, taubin_centroid, chen_schmitt, gauss_exact, gauss_centroid, gauss_default, settings };

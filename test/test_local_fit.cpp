@@ -18,6 +18,8 @@
 #include <Eigen/Core>
 #include <Eigen/LU>
 
+#include "random_numbers.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -47,14 +49,7 @@ class Random
 public:
   explicit Random(std::uint32_t seed) : gen_(seed) {}
 
-  // Uniform in [0, 1) with 53 random bits from two raw 32-bit outputs.
-  double uniform01()
-  {
-    const std::uint64_t a = gen_() >> 5; // 27 bits
-    const std::uint64_t b = gen_() >> 6; // 26 bits
-    return (static_cast<double>(a) * 67108864.0 + static_cast<double>(b)) / 9007199254740992.0;
-  }
-  double uniform(double lo, double hi) { return lo + (hi - lo) * uniform01(); }
+  double uniform(double lo, double hi) { return ce_test::uniform(gen_, lo, hi); }
 
   template <int N>
   Vec<N> in_cube(double half_width = 1.0)

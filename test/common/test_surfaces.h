@@ -33,6 +33,8 @@
 
 #include <Eigen/Dense>
 
+#include "random_numbers.h"
+
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
 
@@ -354,20 +356,6 @@ enum class Diagonal
   main, ///< (i,j)-(i+1,j+1): triangles ((i,j),(i+1,j),(i+1,j+1)) and ((i,j),(i+1,j+1),(i,j+1)), as printed in Hamann's thesis
   anti  ///< (i+1,j)-(i,j+1): triangles ((i,j),(i+1,j),(i,j+1)) and ((i+1,j),(i+1,j+1),(i,j+1)); reproduces Hamann's numbers
 };
-
-// --- deterministic random numbers (identical on every standard library) ---
-
-/// Uniform double in [0, 1) with 53 random bits, built from two raw outputs of std::mt19937
-/// (whose sequence is fixed by the C++ standard; std::uniform_real_distribution is not).
-inline double uniform01(std::mt19937& gen)
-{
-  const std::uint32_t a = static_cast<std::uint32_t>(gen()) >> 5; // 27 bits
-  const std::uint32_t b = static_cast<std::uint32_t>(gen()) >> 6; // 26 bits
-  return (static_cast<double>(a) * 67108864.0 + static_cast<double>(b)) * (1.0 / 9007199254740992.0);
-}
-
-/// Uniform double in [-1, 1).
-inline double uniform_symmetric(std::mt19937& gen) { return 2.0 * uniform01(gen) - 1.0; }
 
 namespace internal {
 
