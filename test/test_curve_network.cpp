@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "estimator_runs.h"
+#include "rotations.h"
 #include "test_surfaces.h"
 
 #include <cmath>
@@ -34,11 +35,7 @@ namespace CE = CGAL::Curvature_estimation;
 namespace CEI = CGAL::Curvature_estimation::internal;
 namespace params = CGAL::Curvature_estimation::parameters;
 
-Eigen::Matrix3d rotation(double a, double b, double c)
-{
-  return (Eigen::AngleAxisd(a, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(b, Eigen::Vector3d::UnitY()) *
-          Eigen::AngleAxisd(c, Eigen::Vector3d::UnitX())).toRotationMatrix();
-}
+using ce_test::rotation;
 
 // ---------------------------------------------------------------------------
 // Curves through three points

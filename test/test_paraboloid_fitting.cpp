@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "estimator_runs.h"
+#include "rotations.h"
 #include "test_surfaces.h"
 
 #include <cmath>
@@ -39,6 +40,7 @@ namespace params = CGAL::Curvature_estimation::parameters;
 using Estimates = ce_test::Estimates<Kernel>;
 using Table_errors = ce_test::Curvature_errors;
 using ce_test::curvature_errors;
+using ce_test::rotation;
 
 // Runs the estimator with every output requested; `extra` adds parameters.
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename Extra>
@@ -208,12 +210,6 @@ TEST(Paraboloid_fitting, DirectionsAreUnitOrthogonalTangentAndFollowTheTorus)
 ce_test::Soup jittered_exponential(std::size_t n)
 {
   return ce_test::jittered_grid_graph_soup(ce_test::hamann_table1_functions()[7], n, -1, 1, 0.2, 7);
-}
-
-Eigen::Matrix3d rotation(double a, double b, double c)
-{
-  return (Eigen::AngleAxisd(a, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(b, Eigen::Vector3d::UnitY()) *
-          Eigen::AngleAxisd(c, Eigen::Vector3d::UnitX())).toRotationMatrix();
 }
 
 TEST(Paraboloid_fitting, InvariantUnderRigidMotions)
