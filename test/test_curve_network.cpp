@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "degenerate_input.h"
 #include "estimator_runs.h"
 #include "rotations.h"
 #include "test_surfaces.h"
@@ -19,7 +20,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <limits>
 #include <vector>
 
 namespace {
@@ -545,23 +545,12 @@ TEST(Curve_network, IrregularDelaunayMeshHasAStatusAndAFiniteValueEverywhere)
 
 TEST(Curve_network, BadInputAndParameters)
 {
-  const ce_test::Soup soup = ce_test::grid_graph_soup(ce_test::hamann_table1_functions()[3], 11);
-  Mesh mesh = ce_test::to_mesh<Mesh>(soup);
-  const Mesh::Vertex_index isolated = mesh.add_vertex(Point(5, 5, 5));
-  const Mesh::Vertex_index broken(static_cast<Mesh::size_type>(5 + 11 * 5));  // the grid's centre
-  mesh.point(broken) = Point(std::numeric_limits<double>::quiet_NaN(), 0, 0);
+  auto [mesh, isolated, broken] = ce_test::grid_with_isolated_and_nan_vertex<Mesh>();
   const Estimates e = estimate(mesh);
-  for (Mesh::Vertex_index v : {isolated, broken}) {
-    EXPECT_EQ(e.status[v], Estimation_status::not_estimable) << v;
-    EXPECT_TRUE(std::isnan(e.principal[v].max_curvature) && std::isnan(e.principal[v].min_curvature));
-    EXPECT_TRUE(std::isnan(e.mean[v]) && std::isnan(e.gaussian[v]));
-    EXPECT_TRUE(std::isnan(e.principal[v].max_direction.x()));
-  }
+  for (Mesh::Vertex_index v : {isolated, broken})
+    ce_test::expect_not_estimable(e, v);
   // The NaN vertex's neighbours lose a curve and fall back, finite.
-  for (Mesh::Vertex_index w : vertices_around_target(halfedge(broken, mesh), mesh)) {
-    EXPECT_NE(e.status[w], Estimation_status::not_estimable) << w;
-    EXPECT_TRUE(std::isfinite(e.mean[w])) << w;
-  }
+  ce_test::expect_neighbors_estimated(e, mesh, broken);
   Mesh empty;
   EXPECT_NO_THROW(estimate(empty));
   EXPECT_THROW(estimate(mesh, params::extrapolation_order(0)), std::invalid_argument);

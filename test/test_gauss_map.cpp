@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include "degenerate_input.h"
 #include "estimator_runs.h"
 #include "surface_mesh_properties.h"
 #include "test_surfaces.h"
@@ -543,11 +544,7 @@ TEST(Gauss_map, DefaultNormalsWorkOnQuadFacesWithBoundary)
 
 TEST(Gauss_map, IsolatedAndNaNVerticesAreNotEstimableWithoutHarmingNeighbours)
 {
-  const ce_test::Soup soup = ce_test::grid_graph_soup(ce_test::hamann_table1_functions()[3], 11);
-  Mesh mesh = ce_test::to_mesh<Mesh>(soup);
-  const vertex_descriptor isolated = mesh.add_vertex(Point(5, 5, 5));
-  const vertex_descriptor broken(static_cast<Mesh::size_type>(5 + 11 * 5));  // the grid's centre
-  mesh.point(broken) = Point(std::numeric_limits<double>::quiet_NaN(), 0, 0);
+  auto [mesh, isolated, broken] = ce_test::grid_with_isolated_and_nan_vertex<Mesh>();
   for (Method method : all_methods) {
     const Estimates e = estimate(method, mesh);
     for (vertex_descriptor v : {isolated, broken}) {

@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "degenerate_input.h"
 #include "estimator_runs.h"
 #include "rotations.h"
 #include "test_surfaces.h"
@@ -367,28 +368,16 @@ TEST(Paraboloid_fitting, DegenerateInputGetsNotEstimableAndNaNWithoutHarmingNeig
 {
   // A grid of a paraboloid, plus: an isolated vertex, a vertex with NaN
   // coordinates in the grid, and a lone triangle (too few points even widened).
-  const ce_test::Soup soup = ce_test::grid_graph_soup(ce_test::hamann_table1_functions()[3], 11);
-  Mesh mesh = ce_test::to_mesh<Mesh>(soup);
-  const Mesh::Vertex_index isolated = mesh.add_vertex(Point(5, 5, 5));
+  auto [mesh, isolated, broken] = ce_test::grid_with_isolated_and_nan_vertex<Mesh>();
   const Mesh::Vertex_index a = mesh.add_vertex(Point(10, 0, 0)), b = mesh.add_vertex(Point(11, 0, 0)),
                            c = mesh.add_vertex(Point(10, 1, 0));
   mesh.add_face(a, b, c);
-  const Mesh::Vertex_index broken(static_cast<Mesh::size_type>(5 + 11 * 5));  // the grid's centre
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  mesh.point(broken) = Point(nan, 0, 0);
 
   const Estimates e = estimate(mesh);
-  for (Mesh::Vertex_index v : {isolated, a, b, c, broken}) {
-    EXPECT_EQ(e.status[v], Estimation_status::not_estimable) << v;
-    EXPECT_TRUE(std::isnan(e.principal[v].max_curvature) && std::isnan(e.principal[v].min_curvature));
-    EXPECT_TRUE(std::isnan(e.mean[v]) && std::isnan(e.gaussian[v]));
-    EXPECT_TRUE(std::isnan(e.principal[v].max_direction.x()));
-  }
+  for (Mesh::Vertex_index v : {isolated, a, b, c, broken})
+    ce_test::expect_not_estimable(e, v);
   // The NaN vertex's neighbours still get finite estimates from their other neighbours.
-  for (Mesh::Vertex_index w : vertices_around_target(halfedge(broken, mesh), mesh)) {
-    EXPECT_NE(e.status[w], Estimation_status::not_estimable) << w;
-    EXPECT_TRUE(std::isfinite(e.mean[w])) << w;
-  }
+  ce_test::expect_neighbors_estimated(e, mesh, broken);
 
   Mesh empty;
   EXPECT_NO_THROW(estimate(empty));
