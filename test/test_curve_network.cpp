@@ -566,14 +566,10 @@ TEST(Curve_network, GivenExactNormalsAreUsed)
   const ce_test::Soup soup = ce_test::torus_soup(R, r, 80, 40);
   Mesh mesh = ce_test::to_mesh<Mesh>(soup);
   const auto exact = ce_test::torus_curvatures(R, r, soup);
-  auto normals = mesh.add_property_map<Mesh::Vertex_index, Vector>("v:n").first;
+  const auto normals = ce_test::exact_normal_map<Kernel>(mesh, exact);
   auto flipped = mesh.add_property_map<Mesh::Vertex_index, Vector>("v:flipped").first;
-  std::size_t i = 0;
-  for (Mesh::Vertex_index v : vertices(mesh)) {
-    const Eigen::Vector3d& n = exact[i++].normal;
-    normals[v] = Vector(n.x(), n.y(), n.z());
+  for (Mesh::Vertex_index v : vertices(mesh))
     flipped[v] = -normals[v];
-  }
   const Estimates e = estimate(mesh, params::vertex_normal_map(normals));
   const Estimates f = estimate(mesh, params::vertex_normal_map(flipped));
   for (std::size_t k = 0; k < exact.size(); ++k) {
