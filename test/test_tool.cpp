@@ -12,6 +12,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include "surface_mesh_properties.h"
+#include "test_surfaces.h"
 
 #include <algorithm>
 #include <array>
@@ -23,7 +24,6 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <map>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -241,42 +241,12 @@ struct Indexed
 // Icosphere of radius r (outward faces), `levels` subdivisions of an icosahedron.
 Indexed icosphere(int levels, double r)
 {
+  const ce_test::Soup sphere = ce_test::sphere_soup(r, static_cast<unsigned>(levels));
   Indexed m;
-  const double t = (1 + std::sqrt(5.0)) / 2;
-  m.points = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-              {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-  m.faces = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-             {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
-             {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
-  auto normalize = [&](std::array<double, 3> p) {
-    const double n = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-    return std::array<double, 3>{r * p[0] / n, r * p[1] / n, r * p[2] / n};
-  };
-  for (auto& p : m.points)
-    p = normalize(p);
-  for (int l = 0; l < levels; ++l) {
-    std::map<std::pair<std::size_t, std::size_t>, std::size_t> midpoints;
-    auto mid = [&](std::size_t a, std::size_t b) {
-      const auto key = std::minmax(a, b);
-      auto it = midpoints.find(key);
-      if (it != midpoints.end())
-        return it->second;
-      const auto& p = m.points[a];
-      const auto& q = m.points[b];
-      m.points.push_back(normalize({p[0] + q[0], p[1] + q[1], p[2] + q[2]}));
-      midpoints[key] = m.points.size() - 1;
-      return m.points.size() - 1;
-    };
-    std::vector<std::vector<std::size_t>> faces;
-    for (const auto& f : m.faces) {
-      const std::size_t a = mid(f[0], f[1]), b = mid(f[1], f[2]), c = mid(f[2], f[0]);
-      faces.push_back({f[0], a, c});
-      faces.push_back({f[1], b, a});
-      faces.push_back({f[2], c, b});
-      faces.push_back({a, b, c});
-    }
-    m.faces = faces;
-  }
+  for (const Eigen::Vector3d& p : sphere.points)
+    m.points.push_back({p.x(), p.y(), p.z()});
+  for (const auto& f : sphere.faces)
+    m.faces.push_back({f[0], f[1], f[2]});
   return m;
 }
 

@@ -14,7 +14,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <map>
 #include <utility>
 #include <vector>
 
@@ -77,37 +76,11 @@ Mesh to_mesh(const Soup& soup)
 // sphere by a random tangent displacement of up to `jitter` times the edge length.
 Soup icosphere(int levels, double jitter)
 {
+  const ce_test::Soup sphere = ce_test::sphere_soup(1.0, static_cast<unsigned>(levels));
   Soup s;
-  const double t = (1. + std::sqrt(5.)) / 2.;
-  s.points = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-              {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-  for (Vec3& p : s.points)
-    p.normalize();
-  s.faces = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-             {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
-             {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
-  for (int l = 0; l < levels; ++l) {
-    std::map<std::pair<int, int>, int> midpoint;
-    auto mid = [&](int a, int b) {
-      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
-      auto it = midpoint.find(key);
-      if (it != midpoint.end())
-        return it->second;
-      s.points.push_back((s.points[a] + s.points[b]).normalized());
-      const int i = int(s.points.size()) - 1;
-      midpoint.emplace(key, i);
-      return i;
-    };
-    std::vector<std::vector<int>> refined;
-    for (const auto& f : s.faces) {
-      const int a = mid(f[0], f[1]), b = mid(f[1], f[2]), c = mid(f[2], f[0]);
-      refined.push_back({f[0], a, c});
-      refined.push_back({f[1], b, a});
-      refined.push_back({f[2], c, b});
-      refined.push_back({a, b, c});
-    }
-    s.faces = std::move(refined);
-  }
+  s.points = sphere.points;
+  for (const auto& f : sphere.faces)
+    s.faces.push_back({int(f[0]), int(f[1]), int(f[2])});
   const double h = 1.0515 / double(1 << levels); // edge length of the icosahedron / 2^levels
   Lcg rng(12345 + levels);
   for (Vec3& p : s.points) {
