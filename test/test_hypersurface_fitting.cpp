@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include "kuhn_grid.h"
+
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -29,6 +31,7 @@ using Point4 = std::array<double, 4>;
 using Mesh = CE::Indexed_tetrahedral_mesh<Point4>;
 using Principal = CE::Hypersurface_principal_curvatures_and_directions<Point4>;
 using Status = CE::Estimation_status;
+using ce_test::Kuhn_diagonal;
 
 // A trivariate function with its gradient and Hessian.
 struct Function
@@ -118,14 +121,6 @@ Point4 exact_normal(const Function& fn, const Eigen::Vector3d& p)
   return {-g.x() / l, -g.y() / l, -g.z() / l, 1 / l};
 }
 
-// Which diagonal of each cube ((i,j,k), ..., (i+1,j+1,k+1)) the 6 Kuhn tetrahedra share.
-enum class Kuhn_diagonal
-{
-  main,  // (i,j,k)-(i+1,j+1,k+1): the cells' faces z = const are split along (i,j)-(i+1,j+1)
-  anti   // (i+1,j,k)-(i,j+1,k+1): the faces z = const are split along (i+1,j)-(i,j+1), the
-         // triangulation of the surface grid that reproduces the thesis' Table 4.1 (test_surfaces.h)
-};
-
 // The N^3 grid over [-1, 1]^3 (N = 26: x_i = -1 + i/12.5), every cube split into the
 // 6 Kuhn tetrahedra around the given diagonal, positively oriented.
 struct Grid
@@ -138,37 +133,17 @@ struct Grid
 
 Grid make_grid(int n, const Function& fn, Kuhn_diagonal diagonal = Kuhn_diagonal::main)
 {
+  const ce_test::Tetrahedral_grid kuhn = ce_test::kuhn_grid(n, diagonal);
   Grid g;
   g.n = n;
-  auto index = [n](int i, int j, int k) { return std::size_t((k * n + j) * n + i); };
+  g.domain = kuhn.points;
+  for (const Eigen::Vector3d& p : g.domain)
+    g.mesh.points.push_back({p.x(), p.y(), p.z(), fn.f(p)});
+  g.mesh.cells = kuhn.cells;
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        const Eigen::Vector3d p(-1 + 2.0 * i / (n - 1), -1 + 2.0 * j / (n - 1), -1 + 2.0 * k / (n - 1));
-        g.domain.push_back(p);
-        g.mesh.points.push_back({p.x(), p.y(), p.z(), fn.f(p)});
+      for (int i = 0; i < n; ++i)
         g.interior.push_back(i > 0 && j > 0 && k > 0 && i < n - 1 && j < n - 1 && k < n - 1);
-      }
-  const int permutations[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
-  for (int k = 0; k + 1 < n; ++k)
-    for (int j = 0; j + 1 < n; ++j)
-      for (int i = 0; i + 1 < n; ++i)
-        for (int p = 0; p < 6; ++p) {
-          // From one end of the diagonal to the other, one step along each axis; with the
-          // anti diagonal the x step goes from i + 1 to i, a reflection.
-          const bool anti = diagonal == Kuhn_diagonal::anti;
-          int c[3] = {anti ? i + 1 : i, j, k};
-          const int step[3] = {anti ? -1 : 1, 1, 1};
-          std::array<std::size_t, 4> cell;
-          cell[0] = index(c[0], c[1], c[2]);
-          for (int s = 0; s < 3; ++s) {
-            c[permutations[p][s]] += step[permutations[p][s]];
-            cell[s + 1] = index(c[0], c[1], c[2]);
-          }
-          if ((p >= 3) != anti)  // odd permutation or reflection: negatively oriented as built
-            std::swap(cell[2], cell[3]);
-          g.mesh.cells.push_back(cell);
-        }
   return g;
 }
 

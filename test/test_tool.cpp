@@ -11,6 +11,7 @@
 #include <CGAL/IO/PLY.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "kuhn_grid.h"
 #include "surface_mesh_properties.h"
 #include "test_surfaces.h"
 
@@ -807,38 +808,14 @@ TEST_F(ToolTest, RepairIsReportedOnStderr)
 
 const char* const tetrahedral_header = "k_1,k_2,k_3,mean,gaussian,status";
 
-struct Tetrahedra
-{
-  std::vector<std::array<double, 3>> points;
-  std::vector<std::array<std::size_t, 4>> cells;  // indices from 0
-};
+using Tetrahedra = ce_test::Tetrahedral_grid;
 
 // The n^3 grid over [-1, 1]^3, every cube split into the 6 Kuhn tetrahedra around
 // its diagonal; half of them negatively oriented, as a file may have them (the
 // tool orients them).
 Tetrahedra kuhn_grid(int n)
 {
-  Tetrahedra t;
-  auto index = [n](int i, int j, int k) { return std::size_t((k * n + j) * n + i); };
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-        t.points.push_back({-1 + 2.0 * i / (n - 1), -1 + 2.0 * j / (n - 1), -1 + 2.0 * k / (n - 1)});
-  const int permutations[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
-  for (int k = 0; k + 1 < n; ++k)
-    for (int j = 0; j + 1 < n; ++j)
-      for (int i = 0; i + 1 < n; ++i)
-        for (const auto& permutation : permutations) {
-          int c[3] = {i, j, k};
-          std::array<std::size_t, 4> cell;
-          cell[0] = index(c[0], c[1], c[2]);
-          for (int s = 0; s < 3; ++s) {
-            ++c[permutation[s]];
-            cell[s + 1] = index(c[0], c[1], c[2]);
-          }
-          t.cells.push_back(cell);
-        }
-  return t;
+  return ce_test::kuhn_grid(n, ce_test::Kuhn_diagonal::main, ce_test::Kuhn_orientation::as_built);
 }
 
 std::string medit_mesh(const Tetrahedra& t, const std::string& extra_sections = "")
