@@ -229,9 +229,32 @@ void expect_consistent(const std::vector<Row>& rows, const std::string& what)
   }
 }
 
+// The rows of a file with `vertices` vertices whose first and last are isolated: those two
+// failed, no other.
+void expect_only_first_and_last_failed(const std::vector<Row>& rows, std::size_t vertices)
+{
+  ASSERT_EQ(rows.size(), vertices);
+  EXPECT_EQ(rows.front().status, "failed");
+  EXPECT_EQ(rows.back().status, "failed");
+  for (std::size_t i = 1; i + 1 < rows.size(); ++i)
+    EXPECT_NE(rows[i].status, "failed") << "row " << i;
+}
+
 // ---------------------------------------------------------------------------
 // Meshes
 // ---------------------------------------------------------------------------
+
+// Adds a vertex in no face (or cell) before the others, which shifts their indices, and
+// one after them.
+template <typename Points, typename Elements>
+void add_isolated_first_and_last(Points& points, Elements& elements)
+{
+  points.insert(points.begin(), {5, 5, 5});
+  for (auto& element : elements)
+    for (auto& i : element)
+      ++i;
+  points.push_back({7, 7, 7});
+}
 
 struct Indexed
 {
@@ -534,19 +557,10 @@ public:
 TEST_F(DegenerateTest, IsolatedVertices)
 {
   Indexed m = icosphere(1, 1);
-  m.points.insert(m.points.begin(), {5, 5, 5});  // vertex 0 is in no face
-  for (auto& f : m.faces)
-    for (auto& i : f)
-      ++i;
-  m.points.push_back({7, 7, 7});                 // nor is the last one
+  add_isolated_first_and_last(m.points, m.faces);
   const auto all = all_methods(file("isolated.off", off(m)), m.points.size(), "isolated vertices");
-  for (const auto& rows : all) {
-    ASSERT_EQ(rows.size(), m.points.size());
-    EXPECT_EQ(rows.front().status, "failed");
-    EXPECT_EQ(rows.back().status, "failed");
-    for (std::size_t i = 1; i + 1 < rows.size(); ++i)
-      EXPECT_NE(rows[i].status, "failed") << "row " << i;
-  }
+  for (const auto& rows : all)
+    expect_only_first_and_last_failed(rows, m.points.size());
 }
 
 TEST_F(DegenerateTest, DegenerateFaces)
@@ -975,18 +989,10 @@ TEST_F(TetrahedralTest, RowsFollowTheFileOrderAndScalarsNamesTheSol)
 TEST_F(TetrahedralTest, IsolatedVerticesAreFailed)
 {
   Tetrahedra t = kuhn_grid(4);
-  t.points.insert(t.points.begin(), {5, 5, 5});  // vertex 0 is in no tetrahedron
-  for (auto& c : t.cells)
-    for (auto& i : c)
-      ++i;
-  t.points.push_back({7, 7, 7});  // nor is the last one
+  add_isolated_first_and_last(t.points, t.cells);
   const std::vector<Row> r =
     rows(graph("isolated", t, sample(t, [](double x, double y, double z) { return x * x - y * z; })));
-  ASSERT_EQ(r.size(), t.points.size());
-  EXPECT_EQ(r.front().status, "failed");
-  EXPECT_EQ(r.back().status, "failed");
-  for (std::size_t i = 1; i + 1 < r.size(); ++i)
-    EXPECT_NE(r[i].status, "failed") << "row " << i;
+  expect_only_first_and_last_failed(r, t.points.size());
 }
 
 TEST_F(TetrahedralTest, OptionsThatDoNotApply)
