@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "kuhn_grid.h"
+#include "test_surfaces.h"
 
 #include <array>
 #include <chrono>
@@ -182,23 +183,20 @@ struct Rms
 
 Rms rms_errors(const Grid& g, const Function& fn, const Result& r)
 {
-  double sH = 0, sK = 0, iH = 0, iK = 0;
-  std::size_t n_interior = 0, failed = 0;
+  ce_test::Error_accumulator H_all, K_all, H_interior, K_interior;
+  std::size_t failed = 0;
   for (std::size_t v = 0; v < g.domain.size(); ++v) {
     const Eigen::Vector3d k = exact_curvatures(fn, g.domain[v]);
-    const double dH = r.H[v] - k.sum() / 3, dK = r.K[v] - k.prod();
     if (r.status[v] == Status::not_estimable)
       ++failed;
-    sH += dH * dH;
-    sK += dK * dK;
+    H_all.add(k.sum() / 3, r.H[v]);
+    K_all.add(k.prod(), r.K[v]);
     if (g.interior[v]) {
-      iH += dH * dH;
-      iK += dK * dK;
-      ++n_interior;
+      H_interior.add(k.sum() / 3, r.H[v]);
+      K_interior.add(k.prod(), r.K[v]);
     }
   }
-  const double n = double(g.domain.size());
-  return {std::sqrt(sH / n), std::sqrt(sK / n), std::sqrt(iH / n_interior), std::sqrt(iK / n_interior), failed};
+  return {H_all.stats().rms, K_all.stats().rms, H_interior.stats().rms, K_interior.stats().rms, failed};
 }
 
 Mesh exact_normals_of(const Grid& g, const Function& fn, std::vector<Point4>& normals)
@@ -300,8 +298,8 @@ TEST(Hypersurface_paraboloid_fitting, TrigonometricFunctionConvergesAtSecondOrde
                 e.K_all, r.seconds);
   }
   for (int s = 1; s < 3; ++s) {
-    const double order_H = std::log(H[s - 1] / H[s]) / std::log(h[s - 1] / h[s]);
-    const double order_K = std::log(K[s - 1] / K[s]) / std::log(h[s - 1] / h[s]);
+    const double order_H = ce_test::observed_order(H[s - 1], H[s], h[s - 1], h[s]);
+    const double order_K = ce_test::observed_order(K[s - 1], K[s], h[s - 1], h[s]);
     std::printf("observed order N = %d -> %d: H %.3f, K %.3f\n", sizes[s - 1], sizes[s], order_H, order_K);
     EXPECT_GE(order_H, 1.9);
   }
