@@ -353,6 +353,19 @@ void check_graph_mesh(const Soup& s, double lo, double hi)
   EXPECT_NEAR(border_length_on_square(m, lo, hi), 4 * (hi - lo), 1e-12);
 }
 
+// The soup as a Surface_mesh and as a Polyhedron_3: closed, of Euler characteristic `euler`, in soup order.
+void check_closed_meshes(const Soup& s, long euler)
+{
+  const Surface_mesh sm = ce_test::to_mesh<Surface_mesh>(s);
+  const Polyhedron ph = ce_test::to_mesh<Polyhedron>(s);
+  EXPECT_EQ(euler_characteristic(sm), euler);
+  EXPECT_EQ(euler_characteristic(ph), euler);
+  EXPECT_TRUE(CGAL::is_closed(sm));
+  EXPECT_TRUE(CGAL::is_closed(ph));
+  expect_soup_order(sm, s);
+  expect_soup_order(ph, s);
+}
+
 void expect_ccw_and_covering(const Soup& s, double lo, double hi)
 {
   double area = 0.0;
@@ -530,14 +543,7 @@ TEST(Icosphere, TopologyOrientationRadius)
     const double vol = ce_test::signed_volume(s);
     EXPECT_GT(vol, 0.0);
     EXPECT_LT(vol, 4.0 / 3.0 * ce_test::pi * radius * radius * radius);
-    const Surface_mesh sm = ce_test::to_mesh<Surface_mesh>(s);
-    const Polyhedron ph = ce_test::to_mesh<Polyhedron>(s);
-    EXPECT_EQ(euler_characteristic(sm), 2);
-    EXPECT_EQ(euler_characteristic(ph), 2);
-    EXPECT_TRUE(CGAL::is_closed(sm));
-    EXPECT_TRUE(CGAL::is_closed(ph));
-    expect_soup_order(sm, s);
-    expect_soup_order(ph, s);
+    check_closed_meshes(s, 2);
   }
   const Soup fine = ce_test::sphere_soup(radius, 4);
   EXPECT_NEAR(ce_test::signed_volume(fine), 4.0 / 3.0 * ce_test::pi * std::pow(radius, 3), 0.01 * std::pow(radius, 3));
@@ -564,14 +570,7 @@ TEST(TorusSoup, TopologyOrientationExactness)
     const double exact_volume = 2 * ce_test::pi * ce_test::pi * R * r * r;
     EXPECT_LT(ce_test::signed_volume(s), exact_volume);
     EXPECT_GT(ce_test::signed_volume(s), 0.95 * exact_volume);
-    const Surface_mesh sm = ce_test::to_mesh<Surface_mesh>(s);
-    const Polyhedron ph = ce_test::to_mesh<Polyhedron>(s);
-    EXPECT_EQ(euler_characteristic(sm), 0);
-    EXPECT_EQ(euler_characteristic(ph), 0);
-    EXPECT_TRUE(CGAL::is_closed(sm));
-    EXPECT_TRUE(CGAL::is_closed(ph));
-    expect_soup_order(sm, s);
-    expect_soup_order(ph, s);
+    check_closed_meshes(s, 0);
     const auto exact = ce_test::torus_curvatures(R, r, s);
     ASSERT_EQ(exact.size(), s.points.size());
     EXPECT_DOUBLE_EQ(exact[0].k_max, 1.0 / r);
