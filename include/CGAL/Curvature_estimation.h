@@ -3,6 +3,7 @@
 #define CGAL_CURVATURE_ESTIMATION_H
 
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
+#include <CGAL/Curvature_estimation/Vertex_normal_method.h>
 #include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/chen_schmitt.h>
 #include <CGAL/Curvature_estimation/curve_network.h>

@@ -5,11 +5,11 @@
 
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/parameters.h>
-#include <CGAL/Curvature_estimation/vertex_normals.h>
+#include <CGAL/Curvature_estimation/Vertex_normal_method.h>
 #include <CGAL/Curvature_estimation/internal/curve_curvature.h>
-#include <CGAL/Curvature_estimation/internal/meusnier_euler.h>
+#include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
 #include <CGAL/Curvature_estimation/internal/face_average_normal.h>
-#include <CGAL/Curvature_estimation/internal/for_each_vertex.h>
+#include <CGAL/Curvature_estimation/internal/meusnier_euler.h>
 #include <CGAL/Curvature_estimation/internal/platelet_fit.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -428,10 +428,6 @@ void curve_network_curvatures(const FaceGraph& g,
 {
   using ::CGAL::parameters::choose_parameter;
   using ::CGAL::parameters::get_parameter;
-  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
-  using GT = typename CGAL::GetGeomTraits<FaceGraph, NamedParameters>::type;
-  using VPM = typename CGAL::GetVertexPointMap<FaceGraph, NamedParameters>::const_type;
-
 
   internal::reject_ball_radius<NamedParameters>("curve_network_curvatures");
   const Curve_model model = choose_parameter(get_parameter(np, internal_np::curve_model), Curve_model::bezier);
@@ -443,33 +439,9 @@ void curve_network_curvatures(const FaceGraph& g,
     throw std::invalid_argument(
       "curve_network_curvatures: extrapolation_order greater than 1 requires Curve_model::bezier");
 
-  if constexpr (!internal::wants_curvature_output<NamedParameters>())
-    return;
-  else {
-    constexpr bool given_normals = internal::has_parameter<NamedParameters, ::CGAL::internal_np::vertex_normal_map_t>();
-    const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                     get_const_property_map(CGAL::vertex_point, g));
-    const auto normals = get_parameter(np, CGAL::internal_np::vertex_normal_map);
-
-    struct Worker
-    {
-      internal::Curve_network_estimator<FaceGraph, VPM> estimator;
-      std::remove_const_t<decltype(normals)> normal_map;
-
-      // The given normal, read on the calling thread (see for_each_vertex).
-      Eigen::Vector3d load(vertex_descriptor v) const { return internal::load_given_normal<given_normals>(normal_map, v); }
-
-      internal::Surface_estimate compute(vertex_descriptor v, const Eigen::Vector3d& given)
-      {
-        return estimator.estimate(v, given_normals ? &given : nullptr);
-      }
-    };
-
-    const Worker worker{internal::Curve_network_estimator<FaceGraph, VPM>(g, vpm, model, order), normals};
-
-    internal::for_each_vertex<ConcurrencyTag, internal::surface_maps_accessible_concurrently<NamedParameters>()>(vertices(g), worker,
-      [&](vertex_descriptor v, const internal::Surface_estimate& e) { internal::put_surface_estimate<GT>(np, v, e); });
-  }
+  internal::estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
+    return internal::Curve_network_estimator<FaceGraph, std::decay_t<decltype(vpm)>>(g, vpm, model, order);
+  });
 }
 
 } // namespace Curvature_estimation

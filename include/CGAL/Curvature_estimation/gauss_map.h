@@ -5,7 +5,7 @@
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/vertex_normals.h>
-#include <CGAL/Curvature_estimation/internal/for_each_vertex.h>
+#include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
 #include <CGAL/Curvature_estimation/internal/gauss_map_differential.h>
 #include <CGAL/Curvature_estimation/internal/platelet_fit.h>
 #include <CGAL/Curvature_estimation/internal/shape_matrix_estimate.h>
@@ -16,6 +16,7 @@
 #include <boost/graph/graph_traits.hpp>
 
 #include <limits>
+#include <memory>
 #include <type_traits>
 
 namespace CGAL {
@@ -159,63 +160,34 @@ void gauss_map_curvatures(const FaceGraph& g, const NamedParameters& np = parame
   using ::CGAL::parameters::choose_parameter;
   using ::CGAL::parameters::get_parameter;
   using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
-  using GT = typename CGAL::GetGeomTraits<FaceGraph, NamedParameters>::type;
-  using VPM = typename CGAL::GetVertexPointMap<FaceGraph, NamedParameters>::const_type;
   constexpr bool given_normals = internal::has_parameter<NamedParameters, ::CGAL::internal_np::vertex_normal_map_t>();
+  static const Eigen::Vector3d no_normal = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
 
   internal::reject_ball_radius<NamedParameters>("gauss_map_curvatures");
   const internal::Platelet_fit_settings settings = internal::platelet_fit_settings(np, "gauss_map_curvatures");
   const Vertex_normal_method normal_method =
     choose_parameter(get_parameter(np, internal_np::vertex_normal_method), Vertex_normal_method::quadric_fit);
-  if constexpr (!internal::wants_curvature_output<NamedParameters>())
-    return;
-  else {
-    const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                     get_const_property_map(CGAL::vertex_point, g));
-    const Eigen::Vector3d no_normal = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
-
-    // First pass: every vertex's unit normal, since each is used by all its neighbours.
-    internal::Vertex_normal_table<FaceGraph> normals(g);
+  internal::estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
+    using VPM = std::decay_t<decltype(vpm)>;
+    // First every vertex's unit normal, since each is used by all its neighbors.
+    auto normals = std::make_shared<internal::Vertex_normal_table<FaceGraph>>(g);
     if constexpr (given_normals) {
       const auto normal_map = get_parameter(np, CGAL::internal_np::vertex_normal_map);
       for (vertex_descriptor v : vertices(g)) {
         const Eigen::Vector3d n = internal::load_given_normal<true>(normal_map, v);
         const double length = n.norm();
-        normals.set(v, length > 0 && std::isfinite(length) ? Eigen::Vector3d(n / length) : no_normal);
+        normals->set(v, length > 0 && std::isfinite(length) ? Eigen::Vector3d(n / length) : no_normal);
       }
     } else {
-      struct Normal_worker
-      {
-        internal::Platelet_fitter<FaceGraph, VPM> fitter;
-        Vertex_normal_method method;
-        bool load(vertex_descriptor) const { return true; }
-        Eigen::Vector3d compute(vertex_descriptor v, bool)
-        {
-          // Where the fit is impossible (a tiny component: too few or ill-conditioned
-          // neighbours up to the widest ring), its uncorrected starting normal.
-          Eigen::Vector3d n;
-          if (fitter.normal(v, method, n) ||
-              (method == Vertex_normal_method::quadric_fit && fitter.normal(v, Vertex_normal_method::area_weighted, n)))
-            return n;
-          return Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
-        }
-      };
-      internal::for_each_vertex<ConcurrencyTag>(
-        vertices(g), Normal_worker{internal::Platelet_fitter<FaceGraph, VPM>(g, vpm, settings), normal_method},
-        [&](vertex_descriptor v, const Eigen::Vector3d& n) { normals.set(v, n); });
+      const internal::Vertex_normal_estimator<FaceGraph, VPM> estimator{
+        internal::Platelet_fitter<FaceGraph, VPM>(g, vpm, settings), normal_method, true};
+      internal::estimate_at_vertices<ConcurrencyTag, false, false>(
+        vertices(g), estimator, [](vertex_descriptor) { return Eigen::Vector3d(); },
+        [&](vertex_descriptor v, const Eigen::Vector3d& n) { normals->set(v, n.squaredNorm() > 0 ? n : no_normal); });
     }
-
-    // Second pass: the differential at each vertex.
-    struct Worker
-    {
-      internal::Gauss_map_estimator<FaceGraph, VPM> estimator;
-      bool load(vertex_descriptor) const { return true; }
-      internal::Surface_estimate compute(vertex_descriptor v, bool) { return estimator.estimate(v); }
-    };
-    internal::for_each_vertex<ConcurrencyTag, internal::surface_maps_accessible_concurrently<NamedParameters>()>(
-      vertices(g), Worker{internal::Gauss_map_estimator<FaceGraph, VPM>(g, vpm, normals)},
-      [&](vertex_descriptor v, const internal::Surface_estimate& e) { internal::put_surface_estimate<GT>(np, v, e); });
-  }
+    // Then the differential at each vertex.
+    return internal::Gauss_map_estimator<FaceGraph, VPM>(g, vpm, std::move(normals));
+  });
 }
 
 } // namespace Curvature_estimation

@@ -10,7 +10,7 @@
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/Tetrahedral_complex_traits.h>
 #include <CGAL/Curvature_estimation/parameters.h>
-#include <CGAL/Curvature_estimation/internal/for_each_vertex.h>
+#include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
 #include <CGAL/Curvature_estimation/internal/platelet_fit.h>
 #include <CGAL/Curvature_estimation/internal/tetrahedral_platelet_fit.h>
 
@@ -26,6 +26,59 @@
 
 namespace CGAL {
 namespace Curvature_estimation {
+namespace internal {
+
+// Hamann's fit at one vertex of a tetrahedral complex (an index into its stars),
+// with the given normal or one estimated by `method`.
+template <typename Fitter>
+struct Hypersurface_paraboloid_estimator
+{
+  Fitter fitter;
+  Vertex_normal_method method;
+
+  Hypersurface_estimate estimate(std::size_t i, const Eigen::Vector4d* given)
+  {
+    return given != nullptr ? fitter.fit(i, *given) : fitter.fit(i, method);
+  }
+};
+
+// Writes the outputs that `np` asks for at vertex `v`, and only those.
+template <typename NamedParameters, typename Vertex>
+void put_hypersurface_estimate(const NamedParameters& np, const Vertex& v, const Hypersurface_estimate& e)
+{
+  using ::CGAL::parameters::get_parameter;
+  if constexpr (has_parameter<NamedParameters, internal_np::vertex_principal_curvatures_and_directions_map_t>()) {
+    auto map = get_parameter(np, internal_np::vertex_principal_curvatures_and_directions_map);
+    using Value = typename boost::property_traits<std::remove_cv_t<std::remove_reference_t<decltype(map)>>>::value_type;
+    using V4 = std::remove_cv_t<std::remove_reference_t<decltype(Value().max_direction)>>;
+    using FT = typename Value::FT;
+    Value value;
+    value.max_curvature = FT(e.curvatures[0]);
+    value.mid_curvature = FT(e.curvatures[1]);
+    value.min_curvature = FT(e.curvatures[2]);
+    value.max_direction = from_vector_4<V4>(e.directions.col(0));
+    value.mid_direction = from_vector_4<V4>(e.directions.col(1));
+    value.min_direction = from_vector_4<V4>(e.directions.col(2));
+    put(map, v, value);
+  }
+  if constexpr (has_parameter<NamedParameters, internal_np::vertex_mean_curvature_map_t>()) {
+    auto map = get_parameter(np, internal_np::vertex_mean_curvature_map);
+    using FT = typename boost::property_traits<std::remove_cv_t<std::remove_reference_t<decltype(map)>>>::value_type;
+    put(map, v, FT(e.curvatures.sum() / 3));
+  }
+  if constexpr (has_parameter<NamedParameters, internal_np::vertex_Gaussian_curvature_map_t>()) {
+    auto map = get_parameter(np, internal_np::vertex_Gaussian_curvature_map);
+    using FT = typename boost::property_traits<std::remove_cv_t<std::remove_reference_t<decltype(map)>>>::value_type;
+    put(map, v, FT(e.curvatures.prod()));
+  }
+  if constexpr (has_parameter<NamedParameters, internal_np::vertex_estimation_status_map_t>())
+    put(get_parameter(np, internal_np::vertex_estimation_status_map), v, e.status);
+  (void)np;
+  (void)v;
+  (void)e;
+}
+
+} // namespace internal
 
 /// \ingroup PkgCurvatureEstimationRef
 ///
@@ -182,62 +235,20 @@ void hypersurface_paraboloid_fitting_curvatures(const TetrahedralComplex& comple
     for (const auto& v : stars.vertices)
       points.push_back(to_vector_4(get(vpm, v)));
 
-    struct Worker
-    {
-      Fitter fitter;
-      Vertex_normal_method method;
-      const Stars* stars;
-      std::remove_const_t<decltype(normals)> normal_map;
-
-      Eigen::Vector4d load(std::size_t i) const
-      {
+    // The hypersurface's maps are read and written on the calling thread.
+    const internal::Hypersurface_paraboloid_estimator<Fitter> estimator{Fitter(stars, points, settings), normal_method};
+    internal::estimate_at_vertices<ConcurrencyTag, false, given_normals>(
+      boost::irange(std::size_t(0), stars.size()), estimator,
+      [&](std::size_t i) -> Eigen::Vector4d {
         if constexpr (given_normals)
-          return to_vector_4(get(normal_map, stars->vertices[i]));
+          return to_vector_4(get(normals, stars.vertices[i]));
         else {
           (void)i;
           return Eigen::Vector4d::Zero();
         }
-      }
-
-      internal::Hypersurface_estimate compute(std::size_t i, const Eigen::Vector4d& given)
-      {
-        return given_normals ? fitter.fit(i, given) : fitter.fit(i, method);
-      }
-    };
-    const Worker worker{Fitter(stars, points, settings), normal_method, &stars, normals};
-
-    internal::for_each_vertex<ConcurrencyTag>(
-      boost::irange(std::size_t(0), stars.size()), worker,
+      },
       [&](std::size_t i, const internal::Hypersurface_estimate& e) {
-        const auto v = stars.vertices[i];
-        if constexpr (internal::has_parameter<NamedParameters, internal_np::vertex_principal_curvatures_and_directions_map_t>()) {
-          auto map = get_parameter(np, internal_np::vertex_principal_curvatures_and_directions_map);
-          using Value = typename boost::property_traits<std::remove_cv_t<std::remove_reference_t<decltype(map)>>>::value_type;
-          using V4 = std::remove_cv_t<std::remove_reference_t<decltype(Value().max_direction)>>;
-          using FT = typename Value::FT;
-          Value value;
-          value.max_curvature = FT(e.curvatures[0]);
-          value.mid_curvature = FT(e.curvatures[1]);
-          value.min_curvature = FT(e.curvatures[2]);
-          value.max_direction = from_vector_4<V4>(e.directions.col(0));
-          value.mid_direction = from_vector_4<V4>(e.directions.col(1));
-          value.min_direction = from_vector_4<V4>(e.directions.col(2));
-          put(map, v, value);
-        }
-        if constexpr (internal::has_parameter<NamedParameters, internal_np::vertex_mean_curvature_map_t>()) {
-          auto map = get_parameter(np, internal_np::vertex_mean_curvature_map);
-          using FT = typename boost::property_traits<std::remove_cv_t<std::remove_reference_t<decltype(map)>>>::value_type;
-          put(map, v, FT(e.curvatures.sum() / 3));
-        }
-        if constexpr (internal::has_parameter<NamedParameters, internal_np::vertex_Gaussian_curvature_map_t>()) {
-          auto map = get_parameter(np, internal_np::vertex_Gaussian_curvature_map);
-          using FT = typename boost::property_traits<std::remove_cv_t<std::remove_reference_t<decltype(map)>>>::value_type;
-          put(map, v, FT(e.curvatures.prod()));
-        }
-        if constexpr (internal::has_parameter<NamedParameters, internal_np::vertex_estimation_status_map_t>())
-          put(get_parameter(np, internal_np::vertex_estimation_status_map), v, e.status);
-        (void)v;
-        (void)e;
+        internal::put_hypersurface_estimate(np, stars.vertices[i], e);
       });
   }
 }

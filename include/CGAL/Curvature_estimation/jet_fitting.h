@@ -6,7 +6,7 @@
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/internal/face_average_normal.h>
-#include <CGAL/Curvature_estimation/internal/for_each_vertex.h>
+#include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
 #include <CGAL/Curvature_estimation/internal/neighborhood.h>
 #include <CGAL/Curvature_estimation/internal/surface_estimate.h>
 
@@ -52,7 +52,10 @@ public:
   // (d+1)(d+2)/2 coefficients (a precondition CGAL checks only in debug builds)
   // and CGAL's condition number is at most `max_condition_`: on a few rows of a
   // grid boundary the system is nearly singular and the jet is garbage.
-  Surface_estimate estimate(vertex_descriptor v)
+  // CGAL's fit estimates the normal itself.
+  static constexpr bool uses_given_normals = false;
+
+  Surface_estimate estimate(vertex_descriptor v, const Eigen::Vector3d*)
   {
     const Eigen::Vector3d center = point_in_double(vpm_, v);
     const Eigen::Vector3d orientation = face_average_normal(v, *g_, vpm_, Vertex_normal_method::area_weighted);
@@ -196,9 +199,6 @@ void jet_fitting_curvatures(const FaceGraph& g, const NamedParameters& np = para
 {
   using ::CGAL::parameters::choose_parameter;
   using ::CGAL::parameters::get_parameter;
-  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
-  using GT = typename CGAL::GetGeomTraits<FaceGraph, NamedParameters>::type;
-  using VPM = typename CGAL::GetVertexPointMap<FaceGraph, NamedParameters>::const_type;
 
   const int jet_degree = choose_parameter(get_parameter(np, internal_np::jet_degree), 2);
   const int monge_degree = choose_parameter(get_parameter(np, internal_np::monge_degree), 2);
@@ -214,19 +214,10 @@ void jet_fitting_curvatures(const FaceGraph& g, const NamedParameters& np = para
   if (!(max_condition > 1))
     throw std::invalid_argument(where + "max_condition_number must be greater than 1");
 
-  if constexpr (internal::wants_curvature_output<NamedParameters>()) {
-    const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                     get_const_property_map(CGAL::vertex_point, g));
-    struct Worker
-    {
-      internal::Jet_fitter<FaceGraph, VPM> fitter;
-      bool load(vertex_descriptor) const { return true; }
-      internal::Surface_estimate compute(vertex_descriptor v, bool) { return fitter.estimate(v); }
-    };
-    internal::for_each_vertex<ConcurrencyTag, internal::surface_maps_accessible_concurrently<NamedParameters>()>(
-      vertices(g), Worker{internal::Jet_fitter<FaceGraph, VPM>(g, vpm, jet_degree, monge_degree, rings, max_rings, max_condition)},
-      [&](vertex_descriptor v, const internal::Surface_estimate& e) { internal::put_surface_estimate<GT>(np, v, e); });
-  }
+  internal::estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
+    return internal::Jet_fitter<FaceGraph, std::decay_t<decltype(vpm)>>(g, vpm, jet_degree, monge_degree, rings,
+                                                                         max_rings, max_condition);
+  });
 }
 
 } // namespace Curvature_estimation

@@ -4,8 +4,8 @@
 
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/parameters.h>
-#include <CGAL/Curvature_estimation/vertex_normals.h>
-#include <CGAL/Curvature_estimation/internal/for_each_vertex.h>
+#include <CGAL/Curvature_estimation/Vertex_normal_method.h>
+#include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
 #include <CGAL/Curvature_estimation/internal/platelet_fit.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -18,6 +18,22 @@
 
 namespace CGAL {
 namespace Curvature_estimation {
+namespace internal {
+
+// Hamann's fit at one vertex, with the given normal or one estimated by `method`.
+template <typename FaceGraph, typename VertexPointMap>
+struct Paraboloid_estimator
+{
+  Platelet_fitter<FaceGraph, VertexPointMap> fitter;
+  Vertex_normal_method method;
+
+  Surface_estimate estimate(typename boost::graph_traits<FaceGraph>::vertex_descriptor v, const Eigen::Vector3d* given)
+  {
+    return given != nullptr ? fitter.fit(v, *given) : fitter.fit(v, method);
+  }
+};
+
+} // namespace internal
 
 /// \ingroup PkgCurvatureEstimationRef
 ///
@@ -147,44 +163,16 @@ void paraboloid_fitting_curvatures(const FaceGraph& g,
 {
   using ::CGAL::parameters::choose_parameter;
   using ::CGAL::parameters::get_parameter;
-  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
-  using GT = typename CGAL::GetGeomTraits<FaceGraph, NamedParameters>::type;
-  using VPM = typename CGAL::GetVertexPointMap<FaceGraph, NamedParameters>::const_type;
-
 
   internal::reject_ball_radius<NamedParameters>("paraboloid_fitting_curvatures");
   const internal::Platelet_fit_settings settings =
     internal::platelet_fit_settings(np, "paraboloid_fitting_curvatures");
   const Vertex_normal_method normal_method =
     choose_parameter(get_parameter(np, internal_np::vertex_normal_method), Vertex_normal_method::quadric_fit);
-  if constexpr (!internal::wants_curvature_output<NamedParameters>())
-    return;
-  else {
-    constexpr bool given_normals = internal::has_parameter<NamedParameters, ::CGAL::internal_np::vertex_normal_map_t>();
-    const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                     get_const_property_map(CGAL::vertex_point, g));
-    const auto normals = get_parameter(np, CGAL::internal_np::vertex_normal_map);
-
-    struct Worker
-    {
-      internal::Platelet_fitter<FaceGraph, VPM> fitter;
-      Vertex_normal_method method;
-      std::remove_const_t<decltype(normals)> normal_map;
-
-      // The given normal, read on the calling thread (see for_each_vertex).
-      Eigen::Vector3d load(vertex_descriptor v) const { return internal::load_given_normal<given_normals>(normal_map, v); }
-
-      internal::Surface_estimate compute(vertex_descriptor v, const Eigen::Vector3d& given)
-      {
-        return given_normals ? fitter.fit(v, given) : fitter.fit(v, method);
-      }
-    };
-
-    const Worker worker{internal::Platelet_fitter<FaceGraph, VPM>(g, vpm, settings), normal_method, normals};
-
-    internal::for_each_vertex<ConcurrencyTag, internal::surface_maps_accessible_concurrently<NamedParameters>()>(vertices(g), worker,
-      [&](vertex_descriptor v, const internal::Surface_estimate& e) { internal::put_surface_estimate<GT>(np, v, e); });
-  }
+  internal::estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
+    return internal::Paraboloid_estimator<FaceGraph, std::decay_t<decltype(vpm)>>{
+      internal::Platelet_fitter<FaceGraph, std::decay_t<decltype(vpm)>>(g, vpm, settings), normal_method};
+  });
 }
 
 } // namespace Curvature_estimation

@@ -10,7 +10,7 @@
 #include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/internal/face_average_normal.h>
-#include <CGAL/Curvature_estimation/internal/for_each_vertex.h>
+#include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
 #include <CGAL/Curvature_estimation/internal/platelet_fit.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -24,6 +24,32 @@
 
 namespace CGAL {
 namespace Curvature_estimation {
+namespace internal {
+
+// The unit normal at one vertex by `method`, or zero where there is none. With
+// `fall_back`, a vertex where quadric_fit fails (a tiny component: too few or
+// ill-conditioned neighbors up to the widest ring) gets its uncorrected starting
+// normal, the area-weighted one.
+template <typename FaceGraph, typename VertexPointMap>
+struct Vertex_normal_estimator
+{
+  static constexpr bool uses_given_normals = false;
+
+  Platelet_fitter<FaceGraph, VertexPointMap> fitter;
+  Vertex_normal_method method;
+  bool fall_back;
+
+  Eigen::Vector3d estimate(typename boost::graph_traits<FaceGraph>::vertex_descriptor v, const Eigen::Vector3d*)
+  {
+    Eigen::Vector3d n;
+    if (fitter.normal(v, method, n) ||
+        (fall_back && method == Vertex_normal_method::quadric_fit && fitter.normal(v, Vertex_normal_method::area_weighted, n)))
+      return n;
+    return Eigen::Vector3d::Zero();
+  }
+};
+
+} // namespace internal
 
 /**
  * \ingroup PkgCurvatureEstimationRef
@@ -158,21 +184,10 @@ void estimate_vertex_normals(const FaceGraph& g,
   const FT no_value = std::numeric_limits<FT>::has_quiet_NaN ? std::numeric_limits<FT>::quiet_NaN() : FT(0);
   const Vector_3 no_normal = construct_vector(no_value, no_value, no_value);
 
-  struct Worker
-  {
-    internal::Platelet_fitter<FaceGraph, VPM> fitter;
-    Vertex_normal_method method;
-
-    bool load(vertex_descriptor) const { return true; }
-
-    Eigen::Vector3d compute(vertex_descriptor v, bool)
-    {
-      Eigen::Vector3d n;
-      return fitter.normal(v, method, n) ? n : Eigen::Vector3d(Eigen::Vector3d::Zero());
-    }
-  };
-
-  internal::for_each_vertex<ConcurrencyTag>(vertices(g), Worker{internal::Platelet_fitter<FaceGraph, VPM>(g, vpm, settings), method},
+  const internal::Vertex_normal_estimator<FaceGraph, VPM> estimator{
+    internal::Platelet_fitter<FaceGraph, VPM>(g, vpm, settings), method, false};
+  internal::estimate_at_vertices<ConcurrencyTag, false, false>(
+    vertices(g), estimator, [](vertex_descriptor) { return Eigen::Vector3d(); },
     [&](vertex_descriptor v, const Eigen::Vector3d& n) {
       const bool estimated = n.squaredNorm() > 0;
       put(normals, v, estimated ? construct_vector(FT(n.x()), FT(n.y()), FT(n.z())) : no_normal);

@@ -1,8 +1,9 @@
-// The vertex normal methods, and the face-averaged normal at one vertex: the
-// first-order normal that every estimator can start from. Included by
-// vertex_normals.h, where the public documentation lives.
+// The face-averaged normal at one vertex: the first-order normal that every
+// estimator can start from.
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_FACE_AVERAGE_NORMAL_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_FACE_AVERAGE_NORMAL_H
+
+#include <CGAL/Curvature_estimation/Vertex_normal_method.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -19,32 +20,6 @@
 
 namespace CGAL {
 namespace Curvature_estimation {
-
-/// \ingroup PkgCurvatureEstimationRef
-/// How a normal is estimated at a vertex of a surface mesh.
-///
-/// The three face-averaging methods return the normalised weighted sum
-/// \f$ \sum_f w_f\, n_f \f$ of the unit normals \f$ n_f \f$ of the faces incident to the
-/// vertex; they differ by the weights \f$ w_f \f$. On a mesh inscribed in a smooth surface
-/// their error is in general of first order in the edge length (second order only on
-/// symmetric stars), which is why curvature estimators default to `quadric_fit`.
-enum class Vertex_normal_method : unsigned char
-{
-  /// The area-weighted normal corrected by the gradient of a local Taylor fit: a
-  /// second-order estimate, also at boundary vertices. The default of
-  /// `estimate_vertex_normals()` and of the curvature estimators that need normals.
-  quadric_fit,
-  /// Weights are the face areas: the normalised sum of the (unnormalised) face normal
-  /// vectors.
-  area_weighted,
-  /// Weights are the interior angles of the faces at the vertex (Thürmer and Wüthrich 1998).
-  /// At a reflex vertex of a non-convex polygonal face the angle is larger than \f$ \pi \f$.
-  angle_weighted,
-  /// Centroid weights \f$ w_f = 1/\|G_f - v\|^2 \f$, with \f$ G_f \f$ the centroid (mean of
-  /// the vertices) of face \f$ f \f$ (Chen and Wu 2004; Chen, Wu and Chi 2005, eq. 23 and 25).
-  centroid_weighted
-};
-
 namespace internal {
 
 /// Computes at vertex `v` of `g` the unit weighted average of the unit normals of the

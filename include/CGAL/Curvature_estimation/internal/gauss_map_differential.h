@@ -19,8 +19,10 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <type_traits>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -118,28 +120,28 @@ public:
   explicit Vertex_normal_table(const FaceGraph& g)
   {
     if constexpr (by_index)  // indices of removed, not yet collected vertices included
-      by_index_.assign(g.number_of_vertices() + g.number_of_removed_vertices(),
-                       Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
+      normals_.assign(g.number_of_vertices() + g.number_of_removed_vertices(),
+                      Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
     else
-      by_vertex_.reserve(num_vertices(g));
+      normals_.reserve(num_vertices(g));
   }
 
   void set(vertex_descriptor v, const Eigen::Vector3d& n)
   {
     if constexpr (by_index)
-      by_index_[std::size_t(v)] = n;
+      normals_[std::size_t(v)] = n;
     else
-      by_vertex_[v] = n;
+      normals_[v] = n;
   }
 
   // The unit normal of `u`; false where it has none.
   bool find(vertex_descriptor u, Eigen::Vector3d& n) const
   {
     if constexpr (by_index) {
-      n = by_index_[std::size_t(u)];
+      n = normals_[std::size_t(u)];
     } else {
-      const auto it = by_vertex_.find(u);
-      if (it == by_vertex_.end())
+      const auto it = normals_.find(u);
+      if (it == normals_.end())
         return false;
       n = it->second;
     }
@@ -147,8 +149,9 @@ public:
   }
 
 private:
-  std::vector<Eigen::Vector3d> by_index_;
-  std::unordered_map<vertex_descriptor, Eigen::Vector3d, boost::hash<vertex_descriptor>> by_vertex_;
+  std::conditional_t<by_index, std::vector<Eigen::Vector3d>,
+                     std::unordered_map<vertex_descriptor, Eigen::Vector3d, boost::hash<vertex_descriptor>>>
+    normals_;
 };
 
 // The Gauss-map estimate at one vertex of a FaceGraph (faces: any polygons;
@@ -161,11 +164,14 @@ public:
   using vertex_descriptor = typename Graph_traits::vertex_descriptor;
   using halfedge_descriptor = typename Graph_traits::halfedge_descriptor;
 
-  Gauss_map_estimator(const FaceGraph& g, VertexPointMap vpm, const Vertex_normal_table<FaceGraph>& normals)
-    : g_(&g), vpm_(vpm), normals_(&normals)
+  // The normals are the table's (shared by the copies of all threads).
+  static constexpr bool uses_given_normals = false;
+
+  Gauss_map_estimator(const FaceGraph& g, VertexPointMap vpm, std::shared_ptr<const Vertex_normal_table<FaceGraph>> normals)
+    : g_(&g), vpm_(vpm), normals_(std::move(normals))
   {}
 
-  Surface_estimate estimate(vertex_descriptor v)
+  Surface_estimate estimate(vertex_descriptor v, const Eigen::Vector3d*)
   {
     const FaceGraph& g = *g_;
     Eigen::Vector3d normal;
@@ -210,7 +216,7 @@ private:
 
   const FaceGraph* g_;
   VertexPointMap vpm_;
-  const Vertex_normal_table<FaceGraph>* normals_;
+  std::shared_ptr<const Vertex_normal_table<FaceGraph>> normals_;
   Gauss_map_differential differential_;
   Eigen::Vector3d center_ = Eigen::Vector3d::Zero();
   double scale_ = 1;

@@ -10,7 +10,7 @@
 
 #include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/internal/face_average_normal.h>
-#include <CGAL/Curvature_estimation/internal/for_each_vertex.h>
+#include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
 #include <CGAL/Curvature_estimation/internal/platelet_fit.h>
 #include <CGAL/Curvature_estimation/internal/shape_matrix_estimate.h>
 #include <CGAL/Curvature_estimation/internal/tangent_frame.h>
@@ -155,68 +155,58 @@ inline bool taubin_shape_matrix(const std::vector<Normal_curvature_sample>& samp
   return true;
 }
 
-// The vertex loop of the estimators built on normal-curvature samples:
+// The local estimator of the estimators built on normal-curvature samples:
 // `solve(samples, shape)` turns the samples of a vertex into its shape matrix
-// (false: not estimable). Normals from the `vertex_normal_map` when given,
-// else by `vertex_normal_method` (default `quadric_fit`).
+// (false: not estimable). The normal is the given one, else estimated by `method`.
+template <typename FaceGraph, typename VertexPointMap, typename Solve>
+struct Normal_curvature_sample_estimator
+{
+  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
+
+  Platelet_fitter<FaceGraph, VertexPointMap> fitter;
+  Normal_curvature_sampler<FaceGraph, VertexPointMap> sampler;
+  Vertex_normal_method method;
+  Solve solve;
+  std::vector<Normal_curvature_sample> samples;
+
+  Surface_estimate estimate(vertex_descriptor v, const Eigen::Vector3d* given)
+  {
+    Eigen::Vector3d normal;
+    if (given != nullptr) {
+      if (!given->allFinite() || !(given->norm() > 0))
+        return Surface_estimate();
+      normal = given->normalized();
+    } else if (!fitter.normal(v, method, normal)) {
+      return Surface_estimate();
+    }
+    const Tangent_frame tangents = tangent_basis<3>(normal);
+    const double scale = sampler.sample(v, normal, tangents, samples);
+    Eigen::Matrix2d shape;
+    if (!(scale > 0) || !solve(samples, shape))
+      return Surface_estimate();
+    return shape_estimate_from_matrix(shape, tangents, normal, scale, false);
+  }
+};
+
+// Taubin's and Chen and Schmitt's estimators, which differ by `solve` (see
+// Normal_curvature_sample_estimator); `caller` names the public function in errors.
 template <typename ConcurrencyTag, typename FaceGraph, typename NamedParameters, typename Solve>
 void normal_curvature_sample_curvatures(const FaceGraph& g, const NamedParameters& np, const char* caller,
                                         Solve solve)
 {
   using ::CGAL::parameters::choose_parameter;
   using ::CGAL::parameters::get_parameter;
-  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
-  using GT = typename CGAL::GetGeomTraits<FaceGraph, NamedParameters>::type;
-  using VPM = typename CGAL::GetVertexPointMap<FaceGraph, NamedParameters>::const_type;
-  constexpr bool given_normals = has_parameter<NamedParameters, ::CGAL::internal_np::vertex_normal_map_t>();
 
   reject_ball_radius<NamedParameters>(caller);
   const Platelet_fit_settings settings = platelet_fit_settings(np, caller);
   const Vertex_normal_method method =
     choose_parameter(get_parameter(np, internal_np::vertex_normal_method), Vertex_normal_method::quadric_fit);
-  if constexpr (!wants_curvature_output<NamedParameters>())
-    return;
-  else {
-    const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                     get_const_property_map(CGAL::vertex_point, g));
-    const auto normals = get_parameter(np, CGAL::internal_np::vertex_normal_map);
-
-    struct Worker
-    {
-      Platelet_fitter<FaceGraph, VPM> fitter;
-      Normal_curvature_sampler<FaceGraph, VPM> sampler;
-      Vertex_normal_method method;
-      std::remove_const_t<decltype(normals)> normal_map;
-      Solve solve;
-      std::vector<Normal_curvature_sample> samples;
-
-      Eigen::Vector3d load(vertex_descriptor v) const { return load_given_normal<given_normals>(normal_map, v); }
-
-      Surface_estimate compute(vertex_descriptor v, const Eigen::Vector3d& given)
-      {
-        Eigen::Vector3d normal = given;
-        if constexpr (given_normals) {
-          if (!normal.allFinite() || !(normal.norm() > 0))
-            return Surface_estimate();
-          normal.normalize();
-        } else if (!fitter.normal(v, method, normal)) {
-          return Surface_estimate();
-        }
-        const Tangent_frame tangents = tangent_basis<3>(normal);
-        const double scale = sampler.sample(v, normal, tangents, samples);
-        Eigen::Matrix2d shape;
-        if (!(scale > 0) || !solve(samples, shape))
-          return Surface_estimate();
-        return shape_estimate_from_matrix(shape, tangents, normal, scale, false);
-      }
-    };
-
-    const Worker worker{Platelet_fitter<FaceGraph, VPM>(g, vpm, settings), Normal_curvature_sampler<FaceGraph, VPM>(g, vpm),
-                        method, normals, solve, {}};
-    for_each_vertex<ConcurrencyTag, surface_maps_accessible_concurrently<NamedParameters>()>(vertices(g), worker, [&](vertex_descriptor v, const Surface_estimate& e) {
-      put_surface_estimate<GT>(np, v, e);
-    });
-  }
+  estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
+    using VPM = std::decay_t<decltype(vpm)>;
+    return Normal_curvature_sample_estimator<FaceGraph, VPM, Solve>{Platelet_fitter<FaceGraph, VPM>(g, vpm, settings),
+                                                                    Normal_curvature_sampler<FaceGraph, VPM>(g, vpm),
+                                                                    method, solve, {}};
+  });
 }
 
 } // namespace internal

@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 
 #include <limits>
+#include <utility>
 
 namespace CGAL {
 namespace Curvature_estimation {
@@ -51,51 +52,52 @@ template <typename NamedParameters>
 constexpr bool wants_curvature_output()
 {
   return has_parameter<NamedParameters, internal_np::vertex_principal_curvatures_and_directions_map_t>() ||
-         has_parameter<NamedParameters, internal_np::vertex_mean_curvature_map_t>() || has_parameter<NamedParameters, internal_np::vertex_Gaussian_curvature_map_t>() ||
+         has_parameter<NamedParameters, internal_np::vertex_mean_curvature_map_t>() ||
+         has_parameter<NamedParameters, internal_np::vertex_Gaussian_curvature_map_t>() ||
          has_parameter<NamedParameters, internal_np::vertex_estimation_status_map_t>();
 }
 
-// Whether the maps of a named-parameter pack of type NP that a surface
-// estimator's load and store touch (the outputs, and a given vertex normal map)
-// may all be accessed from the worker threads (see for_each_vertex).
-template <typename NP>
-constexpr bool surface_maps_accessible_concurrently()
+// Whether the map that `np` (of type NP) holds under `tag`, if it holds one, may
+// be accessed from the worker threads (see for_each_vertex).
+template <typename NP, typename Tag>
+constexpr bool given_map_accessible_concurrently(Tag tag)
 {
-  using ::CGAL::parameters::get_parameter;
-  const NP* np = nullptr;  // dereferenced in decltype only
-  bool all = true;
-  if constexpr (has_parameter<NP, internal_np::vertex_principal_curvatures_and_directions_map_t>())
-    all = all && accessible_concurrently<decltype(get_parameter(*np, internal_np::vertex_principal_curvatures_and_directions_map))>();
-  if constexpr (has_parameter<NP, internal_np::vertex_mean_curvature_map_t>())
-    all = all && accessible_concurrently<decltype(get_parameter(*np, internal_np::vertex_mean_curvature_map))>();
-  if constexpr (has_parameter<NP, internal_np::vertex_Gaussian_curvature_map_t>())
-    all = all && accessible_concurrently<decltype(get_parameter(*np, internal_np::vertex_Gaussian_curvature_map))>();
-  if constexpr (has_parameter<NP, internal_np::vertex_estimation_status_map_t>())
-    all = all && accessible_concurrently<decltype(get_parameter(*np, internal_np::vertex_estimation_status_map))>();
-  if constexpr (has_parameter<NP, ::CGAL::internal_np::vertex_normal_map_t>())
-    all = all && accessible_concurrently<decltype(get_parameter(*np, ::CGAL::internal_np::vertex_normal_map))>();
-  (void)np;
-  return all;
+  if constexpr (has_parameter<NP, Tag>())
+    return accessible_concurrently<decltype(::CGAL::parameters::get_parameter(std::declval<const NP&>(), tag))>();
+  else
+    return true;
+}
+
+// Whether the output maps of a surface estimator that `np` holds may all be
+// accessed from the worker threads.
+template <typename NP>
+constexpr bool surface_outputs_accessible_concurrently()
+{
+  return given_map_accessible_concurrently<NP>(internal_np::vertex_principal_curvatures_and_directions_map) &&
+         given_map_accessible_concurrently<NP>(internal_np::vertex_mean_curvature_map) &&
+         given_map_accessible_concurrently<NP>(internal_np::vertex_Gaussian_curvature_map) &&
+         given_map_accessible_concurrently<NP>(internal_np::vertex_estimation_status_map);
 }
 
 // Writes the outputs that `np` asks for, and only those.
 template <typename GT, typename NamedParameters, typename VertexDescriptor>
 void put_surface_estimate(const NamedParameters& np, VertexDescriptor v, const Surface_estimate& e)
 {
+  using ::CGAL::parameters::get_parameter;
   using FT = typename GT::FT;
   using Vector_3 = typename GT::Vector_3;
   if constexpr (has_parameter<NamedParameters, internal_np::vertex_principal_curvatures_and_directions_map_t>())
-    put(::CGAL::parameters::get_parameter(np, internal_np::vertex_principal_curvatures_and_directions_map), v,
+    put(get_parameter(np, internal_np::vertex_principal_curvatures_and_directions_map), v,
         Principal_curvatures_and_directions<GT>(
           FT(e.min_curvature), FT(e.max_curvature),
           Vector_3(e.min_direction.x(), e.min_direction.y(), e.min_direction.z()),
           Vector_3(e.max_direction.x(), e.max_direction.y(), e.max_direction.z())));
   if constexpr (has_parameter<NamedParameters, internal_np::vertex_mean_curvature_map_t>())
-    put(::CGAL::parameters::get_parameter(np, internal_np::vertex_mean_curvature_map), v, FT(0.5 * (e.max_curvature + e.min_curvature)));
+    put(get_parameter(np, internal_np::vertex_mean_curvature_map), v, FT(0.5 * (e.max_curvature + e.min_curvature)));
   if constexpr (has_parameter<NamedParameters, internal_np::vertex_Gaussian_curvature_map_t>())
-    put(::CGAL::parameters::get_parameter(np, internal_np::vertex_Gaussian_curvature_map), v, FT(e.gaussian_curvature));
+    put(get_parameter(np, internal_np::vertex_Gaussian_curvature_map), v, FT(e.gaussian_curvature));
   if constexpr (has_parameter<NamedParameters, internal_np::vertex_estimation_status_map_t>())
-    put(::CGAL::parameters::get_parameter(np, internal_np::vertex_estimation_status_map), v, e.status);
+    put(get_parameter(np, internal_np::vertex_estimation_status_map), v, e.status);
   (void)np;
   (void)v;
   (void)e;
