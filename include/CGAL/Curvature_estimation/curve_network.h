@@ -9,6 +9,7 @@
 #include <CGAL/Curvature_estimation/internal/curve_curvature.h>
 #include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
 #include <CGAL/Curvature_estimation/internal/face_average_normal.h>
+#include <CGAL/Curvature_estimation/internal/local_coordinates.h>
 #include <CGAL/Curvature_estimation/internal/meusnier_euler.h>
 #include <CGAL/Curvature_estimation/internal/platelet_fit.h>
 
@@ -163,9 +164,7 @@ private:
       if (w == v || std::find(ring_.begin(), ring_.end(), w) != ring_.end())
         continue;
       const Eigen::Vector3d offset = point_in_double(vpm_, w) - center_;
-      double length = offset.norm();
-      if (!(length > 1e-150 && length < 1e150))
-        length = offset.stableNorm();
+      const double length = safe_norm(offset);
       if (!offset.allFinite() || !(length > 0) || !std::isfinite(length))
         continue;
       ring_.push_back(w);

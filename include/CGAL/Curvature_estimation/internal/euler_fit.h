@@ -4,8 +4,9 @@
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_EULER_FIT_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_EULER_FIT_H
 
+#include <CGAL/Curvature_estimation/internal/symmetric_eigen.h>
+
 #include <Eigen/Core>
-#include <Eigen/Eigenvalues>
 
 #include <cmath>
 
@@ -36,12 +37,12 @@ public:
   // without bound as directions come together modulo pi.
   bool solve(double max_condition, Eigen::Matrix2d& shape) const
   {
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(normal_matrix_);
-    const Eigen::Vector3d values = eigen.eigenvalues();
-    if (eigen.info() != Eigen::Success || !(values[0] > 0) || !(std::sqrt(values[2] / values[0]) <= max_condition))
+    Eigen::Vector3d values;
+    Eigen::Matrix3d vectors;
+    if (!symmetric_eigen_accurate<3>(normal_matrix_, values, vectors) || !(values[0] > 0) ||
+        !(std::sqrt(values[2] / values[0]) <= max_condition))
       return false;
-    const Eigen::Vector3d s =
-      eigen.eigenvectors() * (eigen.eigenvectors().transpose() * right_hand_side_).cwiseQuotient(values);
+    const Eigen::Vector3d s = vectors * (vectors.transpose() * right_hand_side_).cwiseQuotient(values);
     shape << s[0], s[1], s[1], s[2];
     return shape.allFinite();
   }

@@ -4,6 +4,7 @@
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_FACE_AVERAGE_NORMAL_H
 
 #include <CGAL/Curvature_estimation/Vertex_normal_method.h>
+#include <CGAL/Curvature_estimation/internal/local_coordinates.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -21,6 +22,41 @@
 namespace CGAL {
 namespace Curvature_estimation {
 namespace internal {
+
+// One walk around a polygonal face, in the local coordinates q = local(u) of its
+// vertices u, starting at the target of halfedge h: Newell's vector
+// sum_i q_i x q_{i+1} (twice the vector area), the sum of the vertices, their number,
+// and the vertices after and before the target of h.
+struct Face_walk
+{
+  Eigen::Vector3d newell = Eigen::Vector3d::Zero();
+  Eigen::Vector3d vertex_sum = Eigen::Vector3d::Zero();
+  Eigen::Vector3d next = Eigen::Vector3d::Zero();
+  Eigen::Vector3d previous = Eigen::Vector3d::Zero();
+  int size = 0;
+};
+
+template <typename FaceGraph, typename Local>
+Face_walk walk_face(typename boost::graph_traits<FaceGraph>::halfedge_descriptor h, const FaceGraph& g,
+                    const Local& local)
+{
+  Face_walk walk;
+  Eigen::Vector3d first = Eigen::Vector3d::Zero();
+  for (auto k : halfedges_around_face(h, g)) {
+    const Eigen::Vector3d q = local(target(k, g));
+    if (walk.size == 0)
+      first = q;
+    else
+      walk.newell += walk.previous.cross(q);
+    if (walk.size == 1)
+      walk.next = q;
+    walk.vertex_sum += q;
+    walk.previous = q;
+    ++walk.size;
+  }
+  walk.newell += walk.previous.cross(first);
+  return walk;
+}
 
 /// Computes at vertex `v` of `g` the unit weighted average of the unit normals of the
 /// faces incident to `v`, with the weights of `method` (one of `area_weighted`,
@@ -81,10 +117,7 @@ Eigen::Vector3d face_average_normal(typename boost::graph_traits<FaceGraph>::ver
   if (halfedge(v, g) == Graph_traits::null_halfedge())
     return zero;
 
-  auto point = [&vpm](vertex_descriptor u) -> Eigen::Vector3d {
-    const auto& p = get(vpm, u);
-    return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-  };
+  auto point = [&vpm](vertex_descriptor u) { return point_in_double(vpm, u); };
 
   const Eigen::Vector3d pv = point(v);
   if (!pv.allFinite())
@@ -112,24 +145,13 @@ Eigen::Vector3d face_average_normal(typename boost::graph_traits<FaceGraph>::ver
     if (is_border(h, g))
       continue;
 
-    // One walk around the face starting at h (whose target is v, at the local origin):
-    // Newell's normal sum_i q_i x q_{i+1} (the terms with q_v = 0 vanish), the sum of
-    // the vertices, and the two neighbours of v in this face.
-    Eigen::Vector3d newell = zero;
-    Eigen::Vector3d vertex_sum = zero;
-    Eigen::Vector3d previous = zero;   // q of the target of the previous halfedge
-    Eigen::Vector3d next_of_v = zero;  // q of the vertex after v in the face
-    int n_vertices = 0;
-    for (halfedge_descriptor k : halfedges_around_face(h, g)) {
-      const Eigen::Vector3d q = (n_vertices == 0) ? zero : local(target(k, g));
-      if (n_vertices == 1)
-        next_of_v = q;
-      newell += previous.cross(q);
-      vertex_sum += q;
-      previous = q;
-      ++n_vertices;
-    }
-    const Eigen::Vector3d& previous_of_v = previous; // target of prev(h), i.e. source(h)
+    // The face from h, whose target v is at the local origin.
+    const Face_walk walk = walk_face(h, g, local);
+    const Eigen::Vector3d& newell = walk.newell;
+    const Eigen::Vector3d& vertex_sum = walk.vertex_sum;
+    const Eigen::Vector3d& next_of_v = walk.next;
+    const Eigen::Vector3d& previous_of_v = walk.previous;
+    const int n_vertices = walk.size;
 
     if (!newell.allFinite() || !vertex_sum.allFinite()) // a non-finite point: no normal, no weight
       continue;

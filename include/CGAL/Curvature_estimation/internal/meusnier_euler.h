@@ -8,10 +8,10 @@
 
 #include <CGAL/Curvature_estimation/internal/euler_fit.h>
 #include <CGAL/Curvature_estimation/internal/shape_operator.h>
+#include <CGAL/Curvature_estimation/internal/symmetric_eigen.h>
 #include <CGAL/Curvature_estimation/internal/tangent_frame.h>
 
 #include <Eigen/Core>
-#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include <cmath>
@@ -57,13 +57,14 @@ inline bool normal_from_tangents(const Eigen::Vector3d* tangents, std::size_t co
     Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
     for (std::size_t i = 0; i < count; ++i)
       scatter += tangents[i] * tangents[i].transpose();
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter);
-    if (eigen.info() != Eigen::Success)
+    Eigen::Vector3d values;
+    Eigen::Matrix3d vectors;
+    if (!symmetric_eigen_accurate<3>(scatter, values, vectors))
       return false;
     // The two larger eigenvalues measure the spread of the tangents in the plane.
-    if (!(eigen.eigenvalues()[1] > 1e-6 * eigen.eigenvalues()[2]))
+    if (!(values[1] > 1e-6 * values[2]))
       return false;
-    candidate = eigen.eigenvectors().col(0);
+    candidate = vectors.col(0);
   }
   if (!candidate.allFinite())
     return false;

@@ -100,22 +100,9 @@ private:
   {
     if (f == Graph_traits::null_face())
       return;
-    Eigen::Vector3d newell = Eigen::Vector3d::Zero(), vertex_sum = Eigen::Vector3d::Zero();
-    Eigen::Vector3d first = Eigen::Vector3d::Zero(), previous = Eigen::Vector3d::Zero();
-    int n = 0;
-    for (vertex_descriptor u : vertices_around_face(halfedge(f, *g_), *g_)) {
-      const Eigen::Vector3d q = local(u);
-      if (n == 0)
-        first = q;
-      else
-        newell += previous.cross(q);
-      vertex_sum += q;
-      previous = q;
-      ++n;
-    }
-    newell += previous.cross(first);
-    const double area = 0.5 * newell.norm();
-    const double centroid_weight = 1 / (vertex_sum / n).squaredNorm();
+    const Face_walk walk = walk_face(halfedge(f, *g_), *g_, [this](vertex_descriptor u) { return local(u); });
+    const double area = 0.5 * walk.newell.norm();
+    const double centroid_weight = 1 / (walk.vertex_sum / walk.size).squaredNorm();
     if (!std::isfinite(area) || !(area > 0) || !std::isfinite(centroid_weight))
       return;
     s.area_weight += area;

@@ -5,9 +5,10 @@
 
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/parameters.h>
-#include <CGAL/Curvature_estimation/internal/platelet_fit.h>
+#include <CGAL/Curvature_estimation/internal/local_coordinates.h>
 #include <CGAL/Curvature_estimation/internal/shape_operator.h>
 #include <CGAL/Curvature_estimation/internal/surface_estimate.h>
+#include <CGAL/Curvature_estimation/internal/tangent_frame.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -23,8 +24,6 @@
 namespace CGAL {
 namespace Curvature_estimation {
 namespace internal {
-
-using Tangent_frame = Eigen::Matrix<double, 3, 2>;
 
 // Curvatures and directions from the shape matrix `shape` in the tangent frame
 // `tangents` of the unit `normal`, in the package's convention (the normal
@@ -69,10 +68,7 @@ double neighbour_length_scale(typename boost::graph_traits<FaceGraph>::vertex_de
   double length_sum = 0;
   int count = 0;
   for (auto h : halfedges_around_target(v, g)) {
-    const Eigen::Vector3d d = point_in_double(vpm, source(h, g)) - center;
-    double length = d.norm();
-    if (!(length > 1e-150 && length < 1e150))
-      length = d.stableNorm();  // no overflow or underflow for huge or tiny meshes
+    const double length = safe_norm(Eigen::Vector3d(point_in_double(vpm, source(h, g)) - center));
     if (std::isfinite(length) && length > 0) {
       length_sum += length;
       ++count;

@@ -3,8 +3,9 @@
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_SHAPE_OPERATOR_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_SHAPE_OPERATOR_H
 
+#include <CGAL/Curvature_estimation/internal/symmetric_eigen.h>
+
 #include <Eigen/Core>
-#include <Eigen/Eigenvalues>
 
 #include <cmath>
 
@@ -24,34 +25,6 @@ struct Graph_curvature
   Eigen::Matrix<double, N, D> directions;
   Eigen::Matrix<double, N, 1> normal;
 };
-
-// Eigenvalues (ascending) and unit eigenvectors (columns) of a symmetric matrix.
-template <int D>
-void symmetric_eigen(const Eigen::Matrix<double, D, D>& m, Eigen::Matrix<double, D, 1>& values,
-                     Eigen::Matrix<double, D, D>& vectors)
-{
-  if constexpr (D == 2) {
-    // Closed form: Eigen's direct 2x2 solver costs more than the whole fit.
-    const double a = m(0, 0), b = m(0, 1), c = m(1, 1);
-    const double mean = 0.5 * (a + c);
-    const double half_difference = 0.5 * (a - c);
-    const double radius = std::sqrt(half_difference * half_difference + b * b);  // scaled curvatures: no overflow
-    values << mean - radius, mean + radius;
-    // An eigenvector of the larger eigenvalue: (b, l - a) or (l - c, b), whichever
-    // is the better conditioned; the other is orthogonal.
-    const double l = values[1];
-    Eigen::Vector2d larger = std::abs(l - a) > std::abs(l - c) ? Eigen::Vector2d(b, l - a) : Eigen::Vector2d(l - c, b);
-    const double length = larger.norm();
-    larger = length > 0 ? Eigen::Vector2d(larger / length) : Eigen::Vector2d(1, 0);  // umbilic: any frame
-    vectors.col(1) = larger;
-    vectors.col(0) = Eigen::Vector2d(-larger.y(), larger.x());
-  } else {
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, D, D>> eigen;
-    eigen.computeDirect(m);
-    values = eigen.eigenvalues();
-    vectors = eigen.eigenvectors();
-  }
-}
 
 // The graph of h(x) = g.x + 1/2 x^T C x over the frame (origin, columns of
 // `tangents`, `normal`): first fundamental form G = I + g g^T, second C / l with

@@ -6,6 +6,7 @@
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/internal/for_each_vertex.h>
+#include <CGAL/Curvature_estimation/internal/local_coordinates.h>
 
 #include <CGAL/number_utils.h>
 
@@ -101,14 +102,6 @@ void put_surface_estimate(const NamedParameters& np, VertexDescriptor v, const S
   (void)np;
   (void)v;
   (void)e;
-}
-
-// The point of `u` in double.
-template <typename VertexPointMap, typename VertexDescriptor>
-Eigen::Vector3d point_in_double(const VertexPointMap& vpm, VertexDescriptor u)
-{
-  const auto p = get(vpm, u);
-  return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
 }
 
 // The given normal at `v` in double (read on the calling thread, see

@@ -8,6 +8,9 @@ namespace CGAL {
 namespace Curvature_estimation {
 namespace internal {
 
+// The tangent frame of a surface in R^3: two orthonormal tangent vectors as columns.
+using Tangent_frame = Eigen::Matrix<double, 3, 2>;
+
 // The columns of the Householder reflection that maps the axis e_k most aligned
 // with `n` onto -sign(n_k) n are orthonormal; the N-1 columns other than k span the
 // tangent space. Branch-free apart from the choice of k, and the same formula for
