@@ -2,9 +2,11 @@
 // closed-form curvatures of known surfaces, finite differences, Rodrigues' formula, Eigen's
 // generalized eigensolver, and the topology/orientation of the generated meshes.
 
+#include "marching_tetrahedra.h"
 #include "test_surfaces.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
@@ -14,7 +16,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <set>
 #include <vector>
 
@@ -590,6 +595,118 @@ TEST(Soup, PerVertexExactValues)
   EXPECT_DOUBLE_EQ(sp[5].H, 1.0 / 3.0);
   EXPECT_NEAR(ce_test::mean_edge_length(ce_test::grid_graph_soup(fn(1), 3, 0.0, 2.0, Diagonal::main)),
               (12 * std::sqrt(1 + 0.04) + 4 * std::sqrt(2 + 0.16)) / 16.0, 1e-14);
+}
+
+// ---------------------------------------------------------------------------
+// Marching tetrahedra of implicit surfaces
+// ---------------------------------------------------------------------------
+
+// Every directed edge of the soup once, and its reverse once: closed, manifold along edges,
+// consistently oriented.
+void expect_each_edge_in_two_opposite_faces(const Soup& s)
+{
+  std::map<std::pair<std::size_t, std::size_t>, int> directed;
+  for (const auto& t : s.faces)
+    for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
+  for (const auto& e : directed) {
+    ASSERT_EQ(e.second, 1) << "edge " << e.first.first << "-" << e.first.second;
+    const auto reverse = directed.find({e.first.second, e.first.first});
+    ASSERT_TRUE(reverse != directed.end()) << "edge " << e.first.first << "-" << e.first.second;
+  }
+}
+
+const Eigen::Vector3d grid_offset(0.137, 0.291, 0.413);
+
+TEST(MarchingTetrahedra, ClosedManifoldOnTheSurface)
+{
+  const double R = 1.0, r = 0.4;
+  struct Case
+  {
+    ce_test::Implicit_surface surface;
+    long euler;
+    double volume;
+  };
+  const Case cases[] = {{ce_test::implicit_ellipsoid(1.0, 0.8, 0.6), 2, 4.0 / 3.0 * ce_test::pi * 1.0 * 0.8 * 0.6},
+                        {ce_test::implicit_torus(R, r), 0, 2.0 * ce_test::pi * ce_test::pi * R * r * r},
+                        {ce_test::gaussian_blobs(), 2, 0.0}};
+  for (const Case& c : cases)
+    for (std::size_t cells : {24u, 48u})
+      for (const Eigen::Vector3d& offset : {Eigen::Vector3d(Eigen::Vector3d::Zero()), grid_offset}) {
+        SCOPED_TRACE(c.surface.name + " on " + std::to_string(cells) + " cells");
+        const Soup s = ce_test::marching_tetrahedra_soup(c.surface, cells, offset);
+        ASSERT_GT(s.faces.size(), 100u);
+        expect_each_edge_in_two_opposite_faces(s);
+        check_closed_meshes(s, c.euler);
+        Surface_mesh sm = ce_test::to_mesh<Surface_mesh>(s);
+        auto component = sm.add_property_map<Surface_mesh::Face_index, std::size_t>("f:component").first;
+        EXPECT_EQ(CGAL::Polygon_mesh_processing::connected_components(sm, component), 1u);
+        std::set<std::array<double, 3>> distinct;
+        for (const auto& p : s.points) distinct.insert({p.x(), p.y(), p.z()});
+        EXPECT_EQ(distinct.size(), s.points.size()); // no two vertices coincide
+        for (const auto& p : s.points) {
+          EXPECT_LE(std::abs(c.surface.value(p)) / c.surface.gradient(p).norm(), 1e-12 * c.surface.half_width);
+        }
+        // outward, and close to the enclosed volume (second order in the cell size)
+        const double volume = ce_test::signed_volume(s);
+        EXPECT_GT(volume, 0.0);
+        if (c.volume > 0.0) {
+          EXPECT_NEAR(volume, c.volume, 0.02 * c.volume);
+        }
+      }
+}
+
+TEST(MarchingTetrahedra, ExactCurvature)
+{
+  const double a = 1.0, b = 0.8, c = 0.6, R = 1.0, r = 0.4;
+  const ce_test::Implicit_surface ellipsoid = ce_test::implicit_ellipsoid(a, b, c);
+  const Soup e = ce_test::marching_tetrahedra_soup(ellipsoid, 24, grid_offset);
+  const auto exact_e = ce_test::implicit_curvatures(ellipsoid, e);
+  ASSERT_EQ(exact_e.size(), e.points.size());
+  for (std::size_t i = 0; i < e.points.size(); i += 37) {
+    const Eigen::Vector3d& p = e.points[i];
+    const Exact_curvature ref = ce_test::ellipsoid_curvature(a, b, c, p);
+    EXPECT_NEAR(exact_e[i].k_max, ref.k_max, 1e-12);
+    EXPECT_NEAR(exact_e[i].k_min, ref.k_min, 1e-12);
+    // the closed form K = 1 / (a b c)^2 / (x^2/a^4 + y^2/b^4 + z^2/c^4)^2
+    const double w = p.x() * p.x() / std::pow(a, 4) + p.y() * p.y() / std::pow(b, 4) + p.z() * p.z() / std::pow(c, 4);
+    EXPECT_NEAR(exact_e[i].K, 1.0 / (a * a * b * b * c * c * w * w), 1e-12);
+    EXPECT_GT(exact_e[i].normal.dot(p), 0.0);
+  }
+  const ce_test::Implicit_surface torus = ce_test::implicit_torus(R, r);
+  const Soup t = ce_test::marching_tetrahedra_soup(torus, 24, grid_offset);
+  const auto exact_t = ce_test::implicit_curvatures(torus, t);
+  for (std::size_t i = 0; i < t.points.size(); i += 37) {
+    const Exact_curvature ref = ce_test::torus_curvature_at(R, r, t.points[i]);
+    EXPECT_NEAR(exact_t[i].k_max, ref.k_max, 1e-11);
+    EXPECT_NEAR(exact_t[i].k_min, ref.k_min, 1e-11);
+    EXPECT_NEAR((exact_t[i].normal - ref.normal).norm(), 0.0, 1e-11);
+  }
+  // The blobs: the analytic gradient and Hessian against central differences.
+  const ce_test::Implicit_surface blobs = ce_test::gaussian_blobs();
+  const double eps = 1e-5;
+  for (const Eigen::Vector3d& p : {Eigen::Vector3d(0.1, 0.2, -0.3), Eigen::Vector3d(-0.7, 0.05, 0.4),
+                                   Eigen::Vector3d(0.5, -0.6, 0.2)}) {
+    const Eigen::Vector3d g = blobs.gradient(p);
+    const Eigen::Matrix3d H = blobs.hessian(p);
+    for (int d = 0; d < 3; ++d) {
+      const Eigen::Vector3d step = eps * Eigen::Vector3d::Unit(d);
+      EXPECT_NEAR(g(d), (blobs.value(p + step) - blobs.value(p - step)) / (2 * eps), 1e-9);
+      EXPECT_NEAR((H.col(d) - (blobs.gradient(p + step) - blobs.gradient(p - step)) / (2 * eps)).norm(), 0.0, 1e-8);
+    }
+  }
+}
+
+TEST(MarchingTetrahedra, HasSlivers)
+{
+  for (const ce_test::Implicit_surface& s :
+       {ce_test::implicit_ellipsoid(1.0, 0.8, 0.6), ce_test::implicit_torus(1.0, 0.4), ce_test::gaussian_blobs()}) {
+    SCOPED_TRACE(s.name);
+    std::vector<double> q = ce_test::aspect_ratios(ce_test::marching_tetrahedra_soup(s, 48, grid_offset));
+    std::sort(q.begin(), q.end());
+    EXPECT_GT(q.front(), 0.0); // no triangle of zero area: nothing needed merging or dropping
+    EXPECT_LT(q.front(), 1e-3);
+    EXPECT_GT(q[q.size() / 2], 0.3); // most triangles are fair
+  }
 }
 
 // ---------------------------------------------------------------------------
