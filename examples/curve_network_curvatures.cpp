@@ -47,11 +47,12 @@ int main(int argc, char** argv)
   }
 
   std::vector<double> H, K;
-  std::size_t ok = 0, widened = 0, failed = 0;
+  std::size_t ok = 0, widened = 0, fallback = 0, failed = 0;
   for (vertex_descriptor v : vertices(mesh)) {
     switch (status[v]) {
       case CE::Estimation_status::ok: ++ok; break;
       case CE::Estimation_status::widened: ++widened; break;
+      case CE::Estimation_status::fallback: ++fallback; break;
       default: ++failed; continue;
     }
     H.push_back(mean[v]);
@@ -63,7 +64,8 @@ int main(int argc, char** argv)
   std::cout << "mesh: " << path << " (" << num_vertices(mesh) << " vertices)\n"
             << "estimator: curve network (Wollmann), Bezier curves, extrapolation order " << order << '\n'
             << "curve network at the requested order: " << ok
-            << ", lower order or paraboloid-fit fallback: " << widened << ", not estimable: " << failed << '\n';
+            << ", lower order: " << widened << ", paraboloid-fit fallback (no curve network): " << fallback
+            << ", not estimable: " << failed << '\n';
   if (!H.empty())
     std::cout << "median H " << H[H.size() / 2] << ", median K " << K[K.size() / 2] << '\n';
   return 0;

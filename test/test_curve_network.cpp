@@ -436,34 +436,34 @@ TEST(Curve_network, DirectionsAreUnitOrthogonalTangentAndFollowTheTorus)
 TEST(Curve_network, SphereSignAndValenceFiveFallback)
 {
   // The icosphere: the 12 vertices of valence 5 have two opposite pairs only and
-  // fall back (widened); the others have three curves. Outward normals: k = +1/r.
+  // fall back (status fallback); the others have three curves. Outward normals: k = +1/r.
   const double radius = 2;
   const ce_test::Soup soup = ce_test::sphere_soup(radius, 4);
   const Mesh mesh = ce_test::to_mesh<Mesh>(soup);
   const Estimates e = estimate(mesh);
   ce_test::Error_accumulator mean_error;
-  std::size_t widened = 0;
+  std::size_t fallbacks = 0;
   std::size_t i = 0;
   for (Mesh::Vertex_index v : vertices(mesh)) {
     const bool valence5 = degree(v, mesh) == 5;
-    EXPECT_EQ(e.status[i], valence5 ? Estimation_status::widened : Estimation_status::ok) << i;
-    widened += e.status[i] == Estimation_status::widened;
+    EXPECT_EQ(e.status[i], valence5 ? Estimation_status::fallback : Estimation_status::ok) << i;
+    fallbacks += e.status[i] == Estimation_status::fallback;
     EXPECT_GT(e.principal[i].min_curvature, 0);
     EXPECT_GE(e.principal[i].max_curvature, e.principal[i].min_curvature);
     mean_error.add(1 / radius, e.mean[i]);
     ++i;
   }
   std::printf("icosphere level 4: H RMS error %.2e (1/r = %.2f), %zu fallbacks\n", mean_error.stats().rms, 1 / radius,
-              widened);
-  EXPECT_EQ(widened, 12u);
+              fallbacks);
+  EXPECT_EQ(fallbacks, 12u);
   EXPECT_LT(mean_error.stats().rms, 0.01 / radius);
 }
 
 TEST(Curve_network, GridGraphStatusesAtTheBoundaryAndReducedOrder)
 {
   // A 21 x 21 grid graph, n = 2: boundary vertices have one opposite pair and fall
-  // back; the vertices next to the boundary have a line that cannot be continued
-  // (order 1 on it, widened); the others are ok.
+  // back (fallback); the vertices next to the boundary have a line that cannot be
+  // continued (order 1 on it, widened); the others are ok.
   const std::size_t n = 21;
   const ce_test::Graph_function f = ce_test::hamann_table1_functions()[7];
   const ce_test::Soup soup = ce_test::grid_graph_soup(f, n);
@@ -477,8 +477,10 @@ TEST(Curve_network, GridGraphStatusesAtTheBoundaryAndReducedOrder)
         const std::size_t k = i + n * j;
         const std::size_t border_distance = std::min(std::min(i, j), std::min(n - 1 - i, n - 1 - j));
         ASSERT_TRUE(std::isfinite(e.mean[k]) && std::isfinite(e.gaussian[k]));
-        EXPECT_EQ(e.status[k], border_distance >= std::size_t(order) ? Estimation_status::ok : Estimation_status::widened)
-          << i << ' ' << j << " order " << order;
+        const Estimation_status expected = border_distance == 0                  ? Estimation_status::fallback
+                                           : border_distance >= std::size_t(order) ? Estimation_status::ok
+                                                                                   : Estimation_status::widened;
+        EXPECT_EQ(e.status[k], expected) << i << ' ' << j << " order " << order;
         deep[k] = border_distance >= 2;
       }
     const Errors t = errors(e, exact, deep);
@@ -523,7 +525,7 @@ TEST(Curve_network, IrregularDelaunayMeshHasAStatusAndAFiniteValueEverywhere)
   const auto exact = ce_test::graph_curvatures(f, soup);
   const Estimates e = estimate(mesh);
   const Estimates hamann = estimate(mesh, params::default_values(), true);
-  std::size_t ok = 0, widened = 0;
+  std::size_t ok = 0, fallbacks = 0;
   std::vector<bool> interior(soup.points.size());
   std::size_t i = 0;
   for (Mesh::Vertex_index v : vertices(mesh)) {
@@ -531,16 +533,16 @@ TEST(Curve_network, IrregularDelaunayMeshHasAStatusAndAFiniteValueEverywhere)
     ASSERT_TRUE(std::isfinite(e.mean[i]) && std::isfinite(e.gaussian[i]) &&
                 std::isfinite(e.principal[i].max_direction.x())) << i;
     ok += e.status[i] == Estimation_status::ok;
-    widened += e.status[i] == Estimation_status::widened;
+    fallbacks += e.status[i] == Estimation_status::fallback;
     interior[i] = !CGAL::is_border(v, mesh);
     ++i;
   }
-  EXPECT_EQ(ok + widened, soup.points.size());
+  EXPECT_EQ(ok + fallbacks, soup.points.size());
   const Errors t = errors(e, exact, interior);
   const Errors p = errors(hamann, exact, interior);
   std::printf("Delaunay 4000 points (trigonometric): %zu curve networks, %zu fallbacks; interior RMS H %.3e K %.3e "
               "(paraboloid fit H %.3e K %.3e)\n",
-              ok, widened, t.mean.stats().rms, t.gaussian.stats().rms, p.mean.stats().rms, p.gaussian.stats().rms);
+              ok, fallbacks, t.mean.stats().rms, t.gaussian.stats().rms, p.mean.stats().rms, p.gaussian.stats().rms);
 }
 
 TEST(Curve_network, BadInputAndParameters)

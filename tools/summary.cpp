@@ -23,12 +23,13 @@ void print_range(const char* name, std::vector<double> values)
 template <typename Row_type>
 void print_estimates(const std::vector<Row_type>& rows, std::size_t vertices, double seconds)
 {
-  std::size_t ok = 0, widened = 0, failed = 0;
+  std::size_t ok = 0, widened = 0, fallback = 0, failed = 0;
   std::vector<double> H, K;
   for (const Row_type& r : rows) {
     switch (r.status) {
       case CE::Estimation_status::ok: ++ok; break;
       case CE::Estimation_status::widened: ++widened; break;
+      case CE::Estimation_status::fallback: ++fallback; break;
       default: ++failed; continue;
     }
     H.push_back(r.mean);
@@ -40,7 +41,10 @@ void print_estimates(const std::vector<Row_type>& rows, std::size_t vertices, do
   std::cout << '\n';
   print_range("mean curvature H", H);
   print_range("Gaussian curvature K", K);
-  std::cout << "ok: " << ok << ", widened: " << widened << ", failed (not estimable): " << failed << '\n';
+  std::cout << "ok: " << ok << ", widened: " << widened;
+  if (fallback > 0)  // only the curve network has a fallback
+    std::cout << ", fallback: " << fallback;
+  std::cout << ", failed (not estimable): " << failed << '\n';
 }
 
 } // namespace

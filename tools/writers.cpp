@@ -26,6 +26,12 @@ void put_double(std::string& out, double x)
   out.append(buffer, result.ptr);
 }
 
+// The tool's name of a status: the library's, except "failed" for not_estimable.
+const char* status_name(CE::Estimation_status status)
+{
+  return status == CE::Estimation_status::not_estimable ? "failed" : CE::to_string(status);
+}
+
 // The header line, then a row per vertex: its values, then its status.
 template <typename Row_type>
 std::string csv_text(const char* header, const std::vector<Row_type>& rows)
@@ -37,7 +43,7 @@ std::string csv_text(const char* header, const std::vector<Row_type>& rows)
       put_double(out, x);
       out += ',';
     }
-    out += CE::to_string(r.status);
+    out += status_name(r.status);
     out += '\n';
   }
   return out;
@@ -116,7 +122,7 @@ std::string ply_text(const Soup& soup, const std::vector<Row>& rows, Quantity q)
   std::string out;
   out += "ply\nformat binary_little_endian 1.0\n";
   out += "comment written by curvature: the vertices and faces of the input file, in its order\n";
-  out += "comment status: 0 = ok, 1 = widened, 2 = failed (its curvature values are NaN)\n";
+  out += "comment status: 0 = ok, 1 = widened, 2 = failed (its curvature values are NaN), 3 = fallback\n";
   out += std::string("comment colours: ") + quantity_name(q) +
          ", blue < 0 < red, saturated at the 95th percentile of |value|; failed grey\n";
   out += "element vertex " + std::to_string(soup.points.size()) + "\n";

@@ -61,17 +61,21 @@ enum class Estimation_status : unsigned char
   ok,            ///< estimated from the neighbourhood asked for (by default the 1-ring)
   widened,       ///< estimated from a neighbourhood wider than the 1-ring, because the 1-ring
                  ///< was too small or ill-conditioned (or because wider rings were asked for)
-  not_estimable  ///< no estimate: isolated vertex, degenerate neighbourhood, invalid input; values are NaN
+  not_estimable, ///< no estimate: isolated vertex, degenerate neighbourhood, invalid input; values are NaN
+  fallback       ///< estimated by the estimator's documented fallback method, because its own method
+                 ///< does not apply at the vertex (`curve_network_curvatures()`: no curve network there)
 };
 
-/// The name of a status as the command-line tool writes it: `ok`, `widened`, `failed`.
+/// The name of a status: `ok`, `widened`, `not_estimable` or `fallback`.
 inline const char* to_string(Estimation_status status)
 {
   switch (status) {
     case Estimation_status::ok: return "ok";
     case Estimation_status::widened: return "widened";
-    default: return "failed";
+    case Estimation_status::not_estimable: return "not_estimable";
+    case Estimation_status::fallback: return "fallback";
   }
+  return "unknown";
 }
 
 inline std::ostream& operator<<(std::ostream& os, Estimation_status status)

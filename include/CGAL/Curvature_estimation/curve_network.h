@@ -145,7 +145,7 @@ private:
     Surface_estimate result =
       given_normal != nullptr ? fallback_.fit(v, given) : fallback_.fit(v, Vertex_normal_method::quadric_fit);
     if (result.status != Estimation_status::not_estimable)
-      result.status = Estimation_status::widened;
+      result.status = Estimation_status::fallback;
     return result;
   }
 
@@ -327,15 +327,15 @@ private:
 /// are used for the pairing and in Meusnier's theorem.
 ///
 /// **Status and fallback.** `Estimation_status::ok`: at least three curves, each at
-/// the requested order. `Estimation_status::widened`: an estimate that departs
-/// from the requested scheme, either (a) some curve had to use a lower order
-/// (only possible for n > 1, within n - 1 rings of the boundary or of a vertex of
-/// valence other than 6), or (b) the curve network does not exist at the vertex:
+/// the requested order. `Estimation_status::widened`: some curve had to use a lower
+/// order (only possible for n > 1, within n - 1 rings of the boundary or of a vertex
+/// of valence other than 6). `Estimation_status::fallback`: the curve network does
+/// not exist at the vertex:
 /// fewer than three pairs of opposite neighbours (boundary vertices; interior
 /// vertices of valence 5 or less; on irregular meshes, every vertex without three
 /// pairs of neighbours at least 150 degrees apart), no normal
 /// from the tangents, or directions too close for Euler's system (condition number
-/// above 20). In case (b) the estimate is Hamann's paraboloid fit
+/// above 20); the estimate is then Hamann's paraboloid fit
 /// (`paraboloid_fitting_curvatures()` with its defaults and the given normal if
 /// any), which widens its neighbourhood as it needs. `Estimation_status::not_estimable`:
 /// isolated vertex, non-finite point, all neighbours coincident, or the fallback
