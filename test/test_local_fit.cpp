@@ -1,7 +1,7 @@
 // Tests of the numerical core shared by the paraboloid-fitting estimators, on
 // exact inputs and without any mesh:
 //   internal/tangent_frame.h   tangent_basis<N>
-//   internal/quadric_fit.h     Taylor_fit<D, FirstOrder, LastOrder>
+//   internal/quadric_fit.h     Taylor_fit<D, FirstOrder, LastOrder>, both conditioning tests
 //   internal/shape_operator.h  graph_curvature<N>
 //
 // Every expected value is computed here from the mathematics of the input
@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/LU>
 
@@ -980,6 +981,450 @@ TEST(Conditioning, TurningTheFrameInTheTangentPlaneChangesTheConditionNumberByBo
   check_rotation<2, 2>(random);
   check_rotation<1, 2>(random);
   check_rotation<1, 3>(random);
+}
+
+// ---------------------------------------------------------------------------
+// Whitened conditioning: Taylor_fit::solve_whitened, test (b) of quadric_fit.h
+// ---------------------------------------------------------------------------
+
+// The samples of a fit, kept to be added again by Taylor_fit::solve_whitened.
+template <int D>
+struct Samples
+{
+  std::vector<Vec<D>> x;
+  std::vector<double> height;
+
+  void push(const Vec<D>& p, double h)
+  {
+    x.push_back(p);
+    height.push_back(h);
+  }
+
+  template <typename Add>
+  void operator()(const Add& add) const
+  {
+    for (std::size_t i = 0; i < x.size(); ++i)
+      add(x[i], height[i], 1.0);
+  }
+
+  // The fit of these samples after test (a) (`scaled`: whether it accepted) and
+  // then test (b) (`whitened`), which leaves the fit's solution.
+  template <typename Fit>
+  Fit fit(double max_condition, bool& scaled, bool& whitened) const
+  {
+    Fit fit;
+    (*this)([&](const Vec<D>& p, double h, double w) { fit.add(p, h, w); });
+    scaled = fit.solve(max_condition);
+    whitened = fit.solve_whitened(max_condition, *this);
+    return fit;
+  }
+
+  // Whether test (b) accepts, and its condition number.
+  template <typename Fit>
+  bool whitened(double max_condition, double& condition) const
+  {
+    bool scaled = false, accepted = false;
+    condition = fit<Fit>(max_condition, scaled, accepted).whitened_condition_number();
+    return accepted;
+  }
+};
+
+// The orders of a Taylor_fit<D, F, L>, and the six fits of the estimators
+// (Hamann's, the normal's, the boundary normal's cubic one; D = 2 and 3).
+template <int D, int F, int L>
+struct Orders
+{
+};
+
+template <typename Check>
+void for_each_fit(const Check& check)
+{
+  check(Orders<2, 2, 2>());
+  check(Orders<2, 1, 2>());
+  check(Orders<2, 1, 3>());
+  check(Orders<3, 2, 2>());
+  check(Orders<3, 1, 2>());
+  check(Orders<3, 1, 3>());
+}
+
+// A D x D matrix R diag(stretch, 1, ...) Q: a rotation Q, a stretch along the
+// first axis, then another rotation R (an anisotropic 1-ring, turned).
+template <int D>
+Mat<D, D> stretch_map(Random& random, double stretch)
+{
+  Mat<D, D> s = Mat<D, D>::Identity();
+  s(0, 0) = stretch;
+  return random.rotation<D>() * s * random.rotation<D>();
+}
+
+// The samples mapped by `a` and scaled to a unit mean length, as the estimators scale them.
+template <int D>
+std::vector<Vec<D>> mapped(const std::vector<Vec<D>>& xs, const Mat<D, D>& a)
+{
+  std::vector<Vec<D>> out;
+  double length = 0;
+  for (const Vec<D>& x : xs) {
+    out.push_back(a * x);
+    length += out.back().norm();
+  }
+  for (Vec<D>& x : out)
+    x /= length / double(xs.size());
+  return out;
+}
+
+template <int D>
+std::vector<Vec<D>> spread_stencil(Random& random, int m)
+{
+  if constexpr (D == 2)
+    return spread_stencil_2d(random, m, 0.3, 1.0);
+  else
+    return spread_stencil_3d(random, m, 0.3);
+}
+
+// A Taylor polynomial of orders F..L with random coefficients: g.x + 1/2 x^T C x + sum e_ijk x_i x_j x_k.
+template <int D>
+struct Polynomial
+{
+  Vec<D> g = Vec<D>::Zero();
+  Mat<D, D> c = Mat<D, D>::Zero();
+  std::vector<std::array<int, 3>> cubic_terms;
+  std::vector<double> cubic_coefficients;
+
+  Polynomial(Random& random, int first_order, int last_order)
+  {
+    c = symmetric_from<D>(separated_eigenvalues<D>(random, -3, 3, 0.2), random.rotation<D>());
+    if (first_order == 1)
+      g = random.in_cube<D>();
+    if (last_order == 3)
+      for (int i = 0; i < D; ++i)
+        for (int j = i; j < D; ++j)
+          for (int k = j; k < D; ++k) {
+            cubic_terms.push_back({i, j, k});
+            cubic_coefficients.push_back(random.uniform(-2, 2));
+          }
+  }
+
+  double operator()(const Vec<D>& x) const
+  {
+    double h = g.dot(x) + 0.5 * x.dot(c * x);
+    for (std::size_t t = 0; t < cubic_terms.size(); ++t)
+      h += cubic_coefficients[t] * x[cubic_terms[t][0]] * x[cubic_terms[t][1]] * x[cubic_terms[t][2]];
+    return h;
+  }
+};
+
+// The condition number of Hamann's quadratic terms alone in whitened coordinates,
+// computed here (long double, Cholesky whitening by Eigen): what test (b) would
+// measure without the linear terms.
+long double whitened_quadratic_only_condition(const std::vector<Vec<2>>& xs)
+{
+  Mat<2, 2> m = Mat<2, 2>::Zero();
+  for (const Vec<2>& x : xs)
+    m += x * x.transpose();
+  m *= 2.0 / double(xs.size());
+  const Mat<2, 2> w = Eigen::LLT<Mat<2, 2>>(m).matrixL().solve(Mat<2, 2>::Identity());
+  std::vector<Vec<2>> ys;
+  for (const Vec<2>& x : xs)
+    ys.push_back(w * x);
+  return independent_condition<2>(ys, 2, 2);
+}
+
+// Rounding bound of a fit accepted by test (b) on a stencil stretched by 100:
+// the coefficients across the stretch are those fitted in y (error a few machine
+// epsilons times cond_1(N_y)) times the stretch squared.
+double stretched_fit_tolerance(double whitened_condition)
+{
+  return 1e-15 * whitened_condition * 100 * 100;
+}
+
+// A stencil stretched by 100 and turned is refused by test (a) and accepted by
+// test (b), which recovers the polynomial exactly: the least-squares problem is
+// well-posed, only its coordinates are skewed.
+template <int D, int F, int L>
+void check_stretched_stencil(Random& random, Orders<D, F, L>)
+{
+  using Fit = CEI::Taylor_fit<D, F, L>;
+  constexpr double n2 = double(Fit::tested) * Fit::tested;
+  double worst = 0, least_scaled = std::numeric_limits<double>::infinity(), worst_whitened = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    const std::vector<Vec<D>> ring = spread_stencil<D>(random, 2 * Fit::tested + trial % 6);
+    const Polynomial<D> h(random, F, L);
+    Samples<D> stretched, round;
+    for (const Vec<D>& x : mapped<D>(ring, stretch_map<D>(random, 100)))
+      stretched.push(x, h(x));
+    for (const Vec<D>& x : mapped<D>(ring, Mat<D, D>::Identity()))
+      round.push(x, h(x));
+    bool scaled = true, whitened = false;
+    // The estimators' thresholds: 1e3, and 1000 times more for the cubic fit (see platelet_fit.h).
+    const Fit fit = stretched.template fit<Fit>(L == 3 ? 1e6 : 1e3, scaled, whitened);
+    EXPECT_FALSE(scaled) << "trial " << trial;
+    EXPECT_GT(fit.condition_number(), 1e6) << "trial " << trial;
+    ASSERT_TRUE(whitened) << "trial " << trial << ", whitened condition " << fit.whitened_condition_number();
+    least_scaled = (std::min)(least_scaled, fit.condition_number());
+    worst_whitened = (std::max)(worst_whitened, fit.whitened_condition_number());
+    const double scale = (std::max)(h.c.cwiseAbs().maxCoeff(), h.g.cwiseAbs().maxCoeff());
+    const double error =
+      (std::max)((fit.hessian() - h.c).cwiseAbs().maxCoeff(), (fit.gradient() - h.g).cwiseAbs().maxCoeff()) / scale;
+    EXPECT_LE(error, stretched_fit_tolerance(fit.whitened_condition_number())) << "trial " << trial;
+    worst = (std::max)(worst, error);
+
+    // The unstretched ring has the same whitened condition, to the factor n^2 of an orthogonal turn.
+    double round_condition = 0;
+    ASSERT_TRUE(round.template whitened<Fit>(1e300, round_condition));
+    EXPECT_LE(fit.whitened_condition_number(), n2 * round_condition) << "trial " << trial;
+    EXPECT_LE(round_condition, n2 * fit.whitened_condition_number()) << "trial " << trial;
+  }
+  std::cout << "Taylor_fit<" << D << "," << F << "," << L << ">, 1-rings stretched by 100: condition (a) >= "
+            << least_scaled << ", (b) <= " << worst_whitened << ", max relative coefficient error " << worst << "\n";
+}
+
+TEST(WhitenedConditioning, StretchedStencilIsAcceptedWithTheExactPolynomial)
+{
+  Random random(81);
+  for_each_fit([&](auto orders) { check_stretched_stencil(random, orders); });
+}
+
+TEST(WhitenedConditioning, StretchedStencilOnAParaboloidGivesItsExactCurvatures)
+{
+  // Hamann's fit over a paraboloid placed in R^3 by a random frame: the
+  // curvatures are minus the eigenvalues of its Hessian, the directions their
+  // eigenvectors (as in HamannFit.RecoversParaboloidAndCurvaturesInRotatedFrames).
+  Random random(82);
+  for (int trial = 0; trial < 40; ++trial) {
+    const Vec<2> lambda = separated_eigenvalues<2>(random, -3, 3, 0.2);
+    const Mat<2, 2> eigenvectors = rotation2(random.uniform(0, pi));
+    const Mat<2, 2> c = symmetric_from<2>(lambda, eigenvectors);
+    const std::vector<Vec<2>> xs = mapped<2>(spread_stencil_2d(random, 6 + trial % 6), stretch_map<2>(random, 100));
+    const Frame<3> frame = test_frame<3>(random, trial);
+    const Vec<3> n = frame.normal();
+    const Mat<3, 2> t = CEI::tangent_basis<3>(n);
+    Samples<2> samples;
+    for (const Vec<2>& x : xs) {
+      Vec<3> local;
+      local << x, 0.5 * x.dot(c * x);
+      const Vec<3> q = frame.rotation * local;
+      samples.push(t.transpose() * q, n.dot(q));
+    }
+    bool scaled = true, whitened = false;
+    const CEI::Taylor_fit<2, 2, 2> fit = samples.fit<CEI::Taylor_fit<2, 2, 2>>(1e3, scaled, whitened);
+    EXPECT_FALSE(scaled) << "trial " << trial;
+    ASSERT_TRUE(whitened) << "trial " << trial << ", whitened condition " << fit.whitened_condition_number();
+    const CEI::Graph_curvature<3> gc = CEI::graph_curvature<3>(fit.hessian(), fit.gradient(), t, n);
+    for (int i = 0; i < 2; ++i) {
+      const double tolerance = stretched_fit_tolerance(fit.whitened_condition_number());
+      EXPECT_NEAR(gc.curvatures[i], -lambda[i], tolerance) << "trial " << trial;
+      // Eigenvalues at least 0.2 apart: the directions are as accurate, over the gap.
+      EXPECT_LE(distance_up_to_sign(gc.directions.col(i), frame.tangents() * eigenvectors.col(i)), tolerance / 0.2)
+        << "trial " << trial << ", direction " << i;
+    }
+  }
+}
+
+template <int F, int L>
+void check_same_solution(Random& random)
+{
+  using Fit = CEI::Taylor_fit<2, F, L>;
+  for (int trial = 0; trial < 20; ++trial) {
+    // Noisy heights: a true least-squares fit, not an interpolation.
+    Samples<2> samples;
+    for (const Vec<2>& x : spread_stencil_2d(random, Fit::tested + 3 + trial % 5, 0.3, 1.0))
+      samples.push(x, random.uniform(-1, 1));
+    Fit scaled;
+    samples([&](const Vec<2>& x, double h, double w) { scaled.add(x, h, w); });
+    ASSERT_TRUE(scaled.solve(1e6));
+    bool accepted = false, whitened = false;
+    const Fit fit = samples.fit<Fit>(1e6, accepted, whitened);
+    ASSERT_TRUE(whitened);
+    const double size = (std::max)(1.0, scaled.hessian().cwiseAbs().maxCoeff());
+    EXPECT_LE((fit.hessian() - scaled.hessian()).cwiseAbs().maxCoeff(), 1e-12 * size) << "trial " << trial;
+    EXPECT_LE((fit.gradient() - scaled.gradient()).cwiseAbs().maxCoeff(), 1e-12 * size) << "trial " << trial;
+  }
+}
+
+TEST(WhitenedConditioning, SolutionIsThatOfTheScaledCoordinatesWhereBothTestsAccept)
+{
+  Random random(83);
+  check_same_solution<2, 2>(random);
+  check_same_solution<1, 2>(random);
+  check_same_solution<1, 3>(random);
+}
+
+template <int D, int F, int L>
+void check_linear_invariance(Random& random, Orders<D, F, L>)
+{
+  using Fit = CEI::Taylor_fit<D, F, L>;
+  constexpr double n2 = double(Fit::tested) * Fit::tested;
+  for (int trial = 0; trial < 20; ++trial) {
+    const std::vector<Vec<D>> xs = spread_stencil<D>(random, Fit::tested + 1 + trial % 8);
+    // Singular values from 1 to 1001 between two rotations.
+    const Vec<D> stretches = random.in_cube<D>().cwiseAbs() * 1e3 + Vec<D>::Ones();
+    const Mat<D, D> a = random.rotation<D>() * stretches.asDiagonal() * random.rotation<D>();
+    Samples<D> original, changed, scaled;
+    for (const Vec<D>& x : xs) {
+      original.push(x, 0);
+      changed.push(a * x, 0);
+      scaled.push(1e-6 * x, 0);
+    }
+    double c_original = 0, c_changed = 0, c_scaled = 0;
+    ASSERT_TRUE(original.template whitened<Fit>(1e300, c_original));
+    ASSERT_TRUE(changed.template whitened<Fit>(1e300, c_changed));
+    ASSERT_TRUE(scaled.template whitened<Fit>(1e300, c_scaled));
+    EXPECT_LE(c_changed, n2 * c_original) << "trial " << trial;
+    EXPECT_LE(c_original, n2 * c_changed) << "trial " << trial;
+    // Whitening removes the scale too, also from fits of several orders.
+    EXPECT_NEAR(c_scaled, c_original, 1e-9 * c_original) << "trial " << trial;
+  }
+}
+
+TEST(WhitenedConditioning, InvariantUnderLinearMapsOfTheTangentSpace)
+{
+  Random random(84);
+  for_each_fit([&](auto orders) { check_linear_invariance(random, orders); });
+}
+
+TEST(WhitenedConditioning, WideningAStretchedGridLowersItButNotTheScaledCondition)
+{
+  // The k-rings of the triangulated grid (diagonals (i+1, j)-(i, j+1)):
+  // max(|i|, |j|, |i + j|) <= k. Stretched by 100 and turned, in units of the
+  // mean 1-ring edge, as the estimators see them.
+  Random random(85);
+  const Mat<2, 2> a = stretch_map<2>(random, 100);
+  double one_ring_length = 0;
+  for (const Vec<2>& x : {Vec<2>(1, 0), Vec<2>(-1, 0), Vec<2>(0, 1), Vec<2>(0, -1), Vec<2>(1, -1), Vec<2>(-1, 1)})
+    one_ring_length += (a * x).norm() / 6;
+  double previous = std::numeric_limits<double>::infinity();
+  for (int k = 1; k <= 3; ++k) {
+    Samples<2> samples;
+    for (int i = -k; i <= k; ++i)
+      for (int j = -k; j <= k; ++j)
+        if ((i != 0 || j != 0) && std::abs(i + j) <= k) {
+          const Vec<2> x = a * Vec<2>(i, j) / one_ring_length;
+          samples.push(x, x.squaredNorm());
+        }
+    bool scaled = true, whitened = false;
+    const CEI::Taylor_fit<2, 1, 2> fit = samples.fit<CEI::Taylor_fit<2, 1, 2>>(1e3, scaled, whitened);
+    EXPECT_FALSE(scaled) << k << " rings";
+    EXPECT_GT(fit.condition_number(), 1e7) << k << " rings";
+    ASSERT_TRUE(whitened) << k << " rings";
+    std::cout << k << "-ring of a grid stretched by 100: condition (a) " << fit.condition_number() << ", (b) "
+              << fit.whitened_condition_number() << "\n";
+    EXPECT_LT(fit.whitened_condition_number(), previous) << k << " rings";
+    previous = fit.whitened_condition_number();
+  }
+}
+
+TEST(WhitenedConditioning, SamplesOnALineAreRefused)
+{
+  // Through the vertex (M is singular) and not (the samples lie on a conic
+  // through the vertex: that line and the parallel one through the vertex), on
+  // both sides and one-sided, along a frame axis and not.
+  const std::vector<std::vector<double>> parameter_sets = {{-1, -0.6, -0.3, 0.3, 0.6, 1},
+                                                           {0.2, 0.4, 0.6, 0.8, 1.0, 1.2, 1.4, 1.6, 1.8, 2.0}};
+  for (const Vec<2>& d : {Vec<2>(1, 0), Vec<2>(std::cos(0.5), std::sin(0.5))})
+    for (double offset : {0.0, 0.3})
+      for (const auto& ts : parameter_sets) {
+        Samples<2> samples;
+        for (double s : ts)
+          samples.push(s * d + offset * Vec<2>(-d[1], d[0]), 0.5 * s * s);
+        double condition = 0;
+        EXPECT_FALSE((samples.whitened<CEI::Taylor_fit<2, 2, 2>>(1e12, condition))) << "offset " << offset << ", " << condition;
+        EXPECT_FALSE((samples.whitened<CEI::Taylor_fit<2, 1, 2>>(1e12, condition))) << "offset " << offset << ", " << condition;
+        EXPECT_FALSE((samples.whitened<CEI::Taylor_fit<2, 1, 3>>(1e12, condition))) << "offset " << offset << ", " << condition;
+      }
+}
+
+TEST(WhitenedConditioning, TiltedLineStencilsAreRefused)
+{
+  // The stencils of Conditioning.TiltedLineStencil*: on a great circle of the
+  // unit sphere through the vertex, seen in a frame tilted by t about its
+  // tangent. Their tangent coordinates lie on a parabola of width t times their
+  // heights; whitening makes it as wide as long, where the quadratic terms
+  // alone are well-conditioned, but the parabola is a conic through the vertex.
+  const std::vector<double> ts = {-1, -0.75, -0.5, 0.25, 0.5, 0.75, 1};
+  for (double angle : {0.0, 0.5, 1.2}) {
+    const Vec<3> d(std::cos(angle), std::sin(angle), 0);
+    for (double tilt : {1e-1, 1e-2, 1e-3}) {
+      const Vec<3> n = rotation3(d, tilt) * Vec<3>::UnitZ();
+      const Mat<3, 2> t = CEI::tangent_basis<3>(n);
+      Samples<2> samples;
+      for (double s : ts) {
+        const Vec<3> p = std::sin(s) * d + (1 - std::cos(s)) * Vec<3>::UnitZ();
+        samples.push(t.transpose() * p, n.dot(p));
+      }
+      const double quadratic_only = static_cast<double>(whitened_quadratic_only_condition(samples.x));
+      EXPECT_LT(quadratic_only, 1e3) << "angle " << angle << ", tilt " << tilt;
+      double hamann = 0, quadratic = 0;
+      EXPECT_FALSE((samples.whitened<CEI::Taylor_fit<2, 2, 2>>(1e3, hamann))) << "angle " << angle << ", tilt " << tilt;
+      EXPECT_FALSE((samples.whitened<CEI::Taylor_fit<2, 1, 2>>(1e3, quadratic))) << "angle " << angle << ", tilt " << tilt;
+      std::cout << "great circle at " << angle << " rad, tilt " << tilt << ": whitened condition " << hamann
+                << " (Hamann's quadratic terms alone: " << quadratic_only << ")\n";
+    }
+  }
+}
+
+TEST(WhitenedConditioning, SamplesOnTwoLinesThroughTheVertexAreRefusedByHamannsFit)
+{
+  // u v = 0 at every sample of a cross, and a linear map of a cross is a cross.
+  Random random(86);
+  for (int trial = 0; trial < 10; ++trial) {
+    const Mat<2, 2> a = stretch_map<2>(random, trial == 0 ? 1.0 : random.uniform(1, 100));
+    Samples<2> samples;
+    for (double s : {-1.0, -0.5, 0.5, 1.0}) {
+      samples.push(a * Vec<2>(s, 0), s * s);
+      samples.push(a * Vec<2>(0, s), 2 * s * s);
+    }
+    bool scaled = true, whitened = true;
+    const CEI::Taylor_fit<2, 2, 2> fit = samples.fit<CEI::Taylor_fit<2, 2, 2>>(1e12, scaled, whitened);
+    EXPECT_FALSE(scaled) << "trial " << trial << ", condition " << fit.condition_number();
+    EXPECT_FALSE(whitened) << "trial " << trial << ", condition " << fit.whitened_condition_number();
+  }
+}
+
+TEST(WhitenedConditioning, ThreeRowsOfSamplesAreRefusedByTheCubicFitAndFourRowsAccepted)
+{
+  // A one-sided boundary stencil of rows v = 0, 1, 2 (u = -3..3, the vertex
+  // left out): v (v - 1) (v - 2) vanishes at every sample, so the cubic terms
+  // are undetermined; a fourth row determines them. Stretched and turned alike.
+  Random random(87);
+  for (int trial = 0; trial < 5; ++trial) {
+    const Mat<2, 2> a = stretch_map<2>(random, trial == 0 ? 1.0 : 30.0);
+    for (int rows : {3, 4}) {
+      Samples<2> samples;
+      for (int v = 0; v < rows; ++v)
+        for (int u = -3; u <= 3; ++u)
+          if (u != 0 || v != 0) {
+            const Vec<2> x = a * Vec<2>(u, v) / 3.0;
+            samples.push(x, x.squaredNorm() + x[0] * x[1] * x[1]);
+          }
+      double condition = 0;
+      EXPECT_EQ((samples.whitened<CEI::Taylor_fit<2, 1, 3>>(1e6, condition)), rows == 4)
+        << rows << " rows, trial " << trial << ", condition " << condition;
+    }
+  }
+}
+
+TEST(WhitenedConditioning, HypersurfaceSamplesOnAPlaneAreRefused)
+{
+  // D = 3: samples on a plane of the tangent space through the vertex (M is
+  // singular), and the same plane seen in a frame tilted by 1e-2 about it (on
+  // a quadric through the vertex).
+  Random random(88);
+  const std::vector<Vec<2>> plane = spread_stencil_2d(random, 14, 0.3, 1.0);
+  for (double tilt : {0.0, 1e-2}) {
+    const Vec<4> n = (Vec<4>::UnitW() + tilt * Vec<4>::UnitZ()).normalized();
+    const Mat<4, 3> t = CEI::tangent_basis<4>(n);
+    Samples<3> samples;
+    for (const Vec<2>& u : plane) {
+      const Vec<4> p(u[0], u[1], 0, 0.5 * u.squaredNorm());
+      samples.push(t.transpose() * p, n.dot(p));
+    }
+    bool scaled = true, whitened = true;
+    samples.fit<CEI::Taylor_fit<3, 2, 2>>(1e3, scaled, whitened);
+    EXPECT_FALSE(scaled) << "tilt " << tilt;
+    EXPECT_FALSE(whitened) << "tilt " << tilt;
+    double condition = 0;
+    EXPECT_FALSE((samples.whitened<CEI::Taylor_fit<3, 1, 2>>(1e3, condition))) << "tilt " << tilt << ", " << condition;
+  }
 }
 
 // ---------------------------------------------------------------------------

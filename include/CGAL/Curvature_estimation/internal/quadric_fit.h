@@ -8,13 +8,65 @@
 // FirstOrder = 2 trusts the frame's normal (Hamann's fit); FirstOrder = 1 fits
 // the gradient, i.e. corrects the normal; LastOrder = 3 takes the cubic part out
 // of the gradient, which a one-sided (boundary) stencil does not cancel.
+//
+// When a fit is accepted: two tests of conditioning. The samples x_i (weights
+// w_i) are given in tangent coordinates scaled by a length of the mesh (the mean
+// 1-ring edge). Let r(x) be the row of the monomials of orders 1..LastOrder,
+// each order in orthonormal coordinates of the symmetric tensors (see add),
+// N = sum w_i r(x_i) r(x_i)^T, and N_own its block of the fit's own orders
+// FirstOrder..LastOrder.
+//
+//   (a) solve:           cond_1(N_own) <= max_condition.
+//   (b) solve_whitened:  cond_1(N_y) <= max_condition, N_y = sum w_i r(y_i) r(y_i)^T
+//                        in the whitened coordinates y = W x.
+//
+// Whitening. M = D sum w_i x_i x_i^T / sum w_i, the samples' second moments
+// about the vertex, scaled so that the weighted mean of |y|^2 is 1; M = L L^T
+// (Cholesky) and W = L^-1, so that the second moments of the y_i are the
+// identity. A monomial of y = W x is a combination of the monomials of x of its
+// own order: r(W x) = T r(x), T block-diagonal (W on the linear terms, the maps
+// it induces on the symmetric tensors on the others), hence N_y = T N T^T. Two
+// whitenings differ by an orthogonal map, which acts on N_y by an orthogonal
+// congruence: cond_1(N_y) is invariant, to a factor bounded by the number of
+// unknowns, under every linear change of the tangent coordinates. (a) is not: a
+// 1-ring stretched by s in one direction (the long thin triangles of CAD and
+// marching-cubes meshes) multiplies cond_1(N_own) by about s^(2 LastOrder)
+// (1e8 for a stretch of 100 in Hamann's fit), and widening keeps the stretch;
+// its N_y is that of the unstretched ring, and widening adds samples in every
+// direction, which lowers cond_1(N_y). N_y is accumulated from the y_i, not
+// computed as T N T^T, which would lose the digits that cond_1(N) costs.
+//
+// What (b) still refuses. N_y is singular exactly where a polynomial of orders
+// 1..LastOrder vanishes at every sample, and nearly singular near that: samples
+// on a line, on two lines through the vertex, on a conic through the vertex (a
+// cubic curve for LastOrder 3, e.g. three rows of samples). The linear terms are
+// in N also for FirstOrder = 2, which does not solve for them: a stencil that is
+// degenerate in the parameter plane (on a line) seen in a frame tilted by t has
+// tangent coordinates on a parabola whose width is t times its heights.
+// Whitening stretches that parabola to unit width, where Hamann's quadratic
+// terms alone are well-conditioned (condition 50) and their fit is garbage (the
+// coefficient across the line is the quartic term over t^2); the parabola is a
+// conic through the vertex, and (b) refuses it (1e16, or singular). M itself
+// must be regular: samples on a line through the vertex make it singular, to
+// rounding, and the whitening is not trusted beyond max_whitening_condition.
+//
+// The solution does not depend on the coordinates (the least-squares
+// polynomial is the same function of the point): solve_whitened computes it in y
+// and maps it back, a_x = T^T a_y, i.e. g = W^T g_y and C = W^T C_y W.
+//
+// The estimators (platelet_fit.h) try (a) on each neighborhood up to the widest,
+// and (b) on the widest where (a) accepts none: where (a) accepts, the fit and
+// its rounding are those of the scaled coordinates, as without (b); (a) is also
+// the only test of a fit with fewer samples than the monomials of orders
+// 1..LastOrder (Hamann's fit on 3 or 4 neighbors).
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_QUADRIC_FIT_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_QUADRIC_FIT_H
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
-
+#include <cstddef>
 #include <limits>
 
 // Full unrolling of the fixed-size loops below: with constant indices the packed
@@ -37,102 +89,154 @@ constexpr int number_of_monomials(int D, int order)
   return order == 0 ? 1 : number_of_monomials(D, order - 1) * (D + order - 1) / order;
 }
 
+// See the header comment for when solve accepts a fit.
 template <int D, int FirstOrder, int LastOrder>
 class Taylor_fit
 {
   static_assert(FirstOrder >= 1 && FirstOrder <= 2 && LastOrder >= 2 && LastOrder <= 3, "orders out of range");
+  static_assert(FirstOrder == 1 || LastOrder == 2, "the own monomials must be a prefix of the tested ones");
+
+  static constexpr int quadratic = number_of_monomials(D, 2);
+  static constexpr int cubic = LastOrder == 3 ? number_of_monomials(D, 3) : 0;
 
 public:
-  static constexpr int unknowns = (FirstOrder == 1 ? number_of_monomials(D, 1) : 0) + number_of_monomials(D, 2) +
-                                  (LastOrder == 3 ? number_of_monomials(D, 3) : 0);
+  static constexpr int unknowns = (FirstOrder == 1 ? D : 0) + quadratic + cubic;
+  // The monomials of orders 1..LastOrder, those of test (b): the fit's own ones
+  // first (quadratic, [linear,] [cubic]), then for Hamann's fit the linear ones.
+  static constexpr int tested = D + quadratic + cubic;
 
   using Point = Eigen::Matrix<double, D, 1>;
   using Hessian = Eigen::Matrix<double, D, D>;
 
+  // The whitening is not trusted where the samples' second moments M have a
+  // condition number (estimated as tr(M) tr(M^-1)) above this: the tangent
+  // coordinates are known to rounding relative to the scaled length 1, which
+  // whitening amplifies by sqrt(cond M) in the narrowest direction (at most 1e4:
+  // 1e-12 relative), and samples on a line through the vertex show about 1e16.
+  static constexpr double max_whitening_condition = 1e8;
+
   Taylor_fit() { clear(); }
 
-  void clear()
-  {
-    CGAL_CURVATURE_ESTIMATION_UNROLL
-    for (double& a : normal_matrix_)
-      a = 0;
-    CGAL_CURVATURE_ESTIMATION_UNROLL
-    for (double& b : right_hand_side_)
-      b = 0;
-    size_ = 0;
-  }
+  void clear() { reset<packed>(); }
 
   // One sample: a point of the tangent space, the height above it, its weight.
-  void add(const Point& x, double height, double weight = 1.0)
-  {
-    double row[unknowns];
-    int column = 0;
-    // Each order's monomials are scaled to be orthonormal coordinates of the
-    // symmetric tensor x (x) ... (x) x (sqrt of the multiplicity), so that a
-    // rotation of the tangent frame acts on each block of the normal matrix by an
-    // orthogonal matrix and the condition number does not depend on how the frame
-    // is turned in the tangent space. Quadratic terms first so that their
-    // coefficients do not depend on FirstOrder.
-    CGAL_CURVATURE_ESTIMATION_UNROLL
-    for (int i = 0; i < D; ++i)
-      CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int j = i; j < D; ++j)
-        row[column++] = (i == j ? 0.5 : half_sqrt2) * x[i] * x[j];
-    if constexpr (FirstOrder == 1)
-      CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int i = 0; i < D; ++i)
-        row[column++] = x[i];
-    if constexpr (LastOrder == 3)
-      CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int i = 0; i < D; ++i)
-        CGAL_CURVATURE_ESTIMATION_UNROLL
-        for (int j = i; j < D; ++j)
-          CGAL_CURVATURE_ESTIMATION_UNROLL
-          for (int k = j; k < D; ++k)
-            row[column++] = sqrt_multiplicity(i, j, k) * x[i] * x[j] * x[k];
-    // The lower triangle only, row by row: the matrix is symmetric.
-    CGAL_CURVATURE_ESTIMATION_UNROLL
-    for (int i = 0, k = 0; i < unknowns; ++i) {
-      const double weighted = weight * row[i];
-      CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int j = 0; j <= i; ++j)
-        normal_matrix_[k++] += weighted * row[j];
-      right_hand_side_[i] += weight * height * row[i];
-    }
-    ++size_;
-  }
+  void add(const Point& x, double height, double weight = 1.0) { accumulate<unknowns>(x, height, weight); }
 
   int size() const { return size_; }
 
-  // Solves the normal equations. Returns false when there are fewer samples than
-  // unknowns, when the normal matrix is singular, or when its condition number
-  // (1-norm, exact for this small matrix) exceeds `max_condition`: a stencil that
-  // is singular in the tangent space can still be solvable in floating point once
-  // tilted, and its solution is then garbage. The caller scales the samples to a
-  // unit length (the mean 1-ring edge), so the number does not depend on the
-  // mesh's scale, and by the choice of monomials (see add) it depends on the turn
-  // of the frame by at most a factor of the number of unknowns.
+  // Test (a) of the header comment: solves the normal equations unless there
+  // are fewer samples than unknowns, the normal matrix is singular, or its
+  // condition number (1-norm, exact for this small matrix) exceeds
+  // `max_condition`: a stencil that is singular in the tangent space can still
+  // be solvable in floating point once tilted, and its solution is then garbage.
+  // The caller scales the samples to a unit length (the mean 1-ring edge), so
+  // the number does not depend on the mesh's scale, and by the choice of
+  // monomials (see add) it depends on the turn of the frame by at most a factor
+  // of the number of unknowns.
   bool solve(double max_condition)
   {
     condition_ = std::numeric_limits<double>::infinity();
     if (size_ < unknowns)
       return false;
     double inverse[packed];
-    if (!invert(normal_matrix_, inverse))
+    if (!invert<unknowns>(normal_matrix_, inverse))
       return false;
-    condition_ = one_norm(normal_matrix_) * one_norm(inverse);
+    condition_ = one_norm<unknowns>(normal_matrix_) * one_norm<unknowns>(inverse);
     if (!(condition_ <= max_condition))
       return false;
-
     double coefficients[unknowns];
+    multiply(inverse, right_hand_side_, coefficients);
+    set_coefficients(coefficients);
+    return true;
+  }
+
+  // Test (b) of the header comment, and the fit in whitened coordinates mapped
+  // back to x, on the samples that `samples(add)` gives by calling
+  // add(x, height, weight) for each (twice: once for M, once for N_y, which is
+  // accumulated from the y_i; computing it as T N T^T would lose the digits that
+  // cond_1(N) costs); the fit then holds them. False when there are fewer
+  // samples than the tested monomials, when M or N_y is singular, when the
+  // whitening is not trusted (max_whitening_condition) or when cond_1(N_y)
+  // exceeds `max_condition`.
+  template <typename Samples>
+  bool solve_whitened(double max_condition, const Samples& samples)
+  {
+    whitened_condition_ = std::numeric_limits<double>::infinity();
+    Hessian moments = Hessian::Zero();
+    double weight_sum = 0;
+    int count = 0;
+    samples([&](const Point& x, double, double weight) {
+      moments.noalias() += weight * x * x.transpose();
+      weight_sum += weight;
+      ++count;
+    });
+    if (count < tested)
+      return false;
+    Hessian W;
+    if (!(weight_sum > 0) || !whitening((D / weight_sum) * moments, W))
+      return false;
+    reset<tested_packed>();
+    samples([&](const Point& x, double height, double weight) { accumulate<tested>(W * x, height, weight); });
+
+    double whitened_inverse[tested_packed];
+    if (!invert<tested>(normal_matrix_, whitened_inverse))
+      return false;
+    whitened_condition_ = one_norm<tested>(normal_matrix_) * one_norm<tested>(whitened_inverse);
+    if (!(whitened_condition_ <= max_condition))
+      return false;
+    // The fit's own block is a prefix of N_y; its inverse where it is not all of N_y.
+    double inverse[packed];
+    if constexpr (unknowns == tested)
+      std::copy(whitened_inverse, whitened_inverse + packed, inverse);
+    else if (!invert<unknowns>(normal_matrix_, inverse))
+      return false;
+    double coefficients[unknowns];
+    multiply(inverse, right_hand_side_, coefficients);
+    set_coefficients(coefficients);
+    // h(x) = g_y . (W x) + 1/2 (W x)^T C_y (W x)
+    hessian_ = W.transpose() * hessian_ * W;
+    gradient_ = W.transpose() * gradient_;
+    return true;
+  }
+
+  // The condition numbers of tests (a) and (b) at the last solve and solve_whitened (infinity where not computed).
+  double condition_number() const { return condition_; }
+  double whitened_condition_number() const { return whitened_condition_; }
+  const Hessian& hessian() const { return hessian_; }
+  const Point& gradient() const { return gradient_; }
+
+private:
+  static constexpr double half_sqrt2 = 0.70710678118654752440;
+  // Symmetric matrices are stored packed: the lower triangle row by row, so that
+  // the leading block of the fit's own unknowns is a prefix of the tested matrix.
+  static constexpr int packed = unknowns * (unknowns + 1) / 2;
+  static constexpr int tested_packed = tested * (tested + 1) / 2;
+  static constexpr int index(int i, int j) { return i >= j ? i * (i + 1) / 2 + j : j * (j + 1) / 2 + i; }
+
+  static constexpr double quadratic_scale(int i, int j) { return i == j ? 0.5 : half_sqrt2; }
+
+  // The square root of the number of distinct orderings of the indices i <= j <= k.
+  static constexpr double sqrt_multiplicity(int i, int j, int k)
+  {
+    return i == k ? 1.0 : (i == j || j == k) ? 1.7320508075688772935 : 2.4494897427831780982;
+  }
+
+  // inverse * rhs, the solution of the normal equations (own block).
+  static void multiply(const double (&inverse)[packed], const double (&rhs)[unknowns], double (&solution)[unknowns])
+  {
     CGAL_CURVATURE_ESTIMATION_UNROLL
     for (int i = 0; i < unknowns; ++i) {
       double value = 0;
       CGAL_CURVATURE_ESTIMATION_UNROLL
       for (int j = 0; j < unknowns; ++j)
-        value += inverse[index(i, j)] * right_hand_side_[j];
-      coefficients[i] = value;
+        value += inverse[index(i, j)] * rhs[j];
+      solution[i] = value;
     }
+  }
+
+  // The Hessian and gradient from the coefficients of the monomials of x.
+  void set_coefficients(const double (&coefficients)[unknowns])
+  {
     int column = 0;
     CGAL_CURVATURE_ESTIMATION_UNROLL
     for (int i = 0; i < D; ++i)
@@ -149,47 +253,127 @@ public:
         gradient_[i] = coefficients[column + i];
     else
       gradient_.setZero();
-    return true;
   }
 
-  double condition_number() const { return condition_; }
-  const Hessian& hessian() const { return hessian_; }
-  const Point& gradient() const { return gradient_; }
-
-private:
-  static constexpr double half_sqrt2 = 0.70710678118654752440;
-  // Symmetric matrices are stored packed: the lower triangle row by row.
-  static constexpr int packed = unknowns * (unknowns + 1) / 2;
-  static constexpr int index(int i, int j) { return i >= j ? i * (i + 1) / 2 + j : j * (j + 1) / 2 + i; }
-
-  // The square root of the number of distinct orderings of the indices i <= j <= k.
-  static constexpr double sqrt_multiplicity(int i, int j, int k)
+  // W = L^-1 for M = L L^T (see the header comment), lower triangular; false
+  // where M is not positive definite or its condition number, estimated as
+  // tr(M) tr(M^-1) (between it and D^2 times it), exceeds max_whitening_condition.
+  static bool whitening(const Hessian& M, Hessian& W)
   {
-    return i == k ? 1.0 : (i == j || j == k) ? 1.7320508075688772935 : 2.4494897427831780982;
+    Hessian L = Hessian::Zero();
+    for (int j = 0; j < D; ++j) {
+      double diagonal = M(j, j);
+      for (int k = 0; k < j; ++k)
+        diagonal -= L(j, k) * L(j, k);
+      if (!(diagonal > 0))
+        return false;
+      L(j, j) = std::sqrt(diagonal);
+      for (int i = j + 1; i < D; ++i) {
+        double value = M(i, j);
+        for (int k = 0; k < j; ++k)
+          value -= L(i, k) * L(j, k);
+        L(i, j) = value / L(j, j);
+      }
+    }
+    W.setZero();
+    for (int j = 0; j < D; ++j) {
+      W(j, j) = 1 / L(j, j);
+      for (int i = j + 1; i < D; ++i) {
+        double value = 0;
+        for (int k = j; k < i; ++k)
+          value -= L(i, k) * W(k, j);
+        W(i, j) = value / L(i, i);
+      }
+    }
+    return M.trace() * W.squaredNorm() <= max_whitening_condition;  // tr(M^-1) = |W|_F^2
   }
 
-  // The largest column sum of absolute values of a packed symmetric matrix.
-  static double one_norm(const double (&m)[packed])
+  // Zeroes the first n entries of the normal matrix (the own block, or all of
+  // it), the right-hand side and the count.
+  template <int n>
+  void reset()
+  {
+    CGAL_CURVATURE_ESTIMATION_UNROLL
+    for (int k = 0; k < n; ++k)
+      normal_matrix_[k] = 0;
+    CGAL_CURVATURE_ESTIMATION_UNROLL
+    for (double& b : right_hand_side_)
+      b = 0;
+    size_ = 0;
+  }
+
+  // Adds a sample to the first n rows of the normal matrix (the fit's own
+  // unknowns, or all the tested monomials) and to the right-hand side.
+  template <int n>
+  void accumulate(const Point& x, double height, double weight)
+  {
+    double row[tested];
+    int column = 0;
+    // Each order's monomials are scaled to be orthonormal coordinates of the
+    // symmetric tensor x (x) ... (x) x (sqrt of the multiplicity), so that a
+    // rotation of the tangent frame acts on each block of the normal matrix by an
+    // orthogonal matrix and the condition number does not depend on how the frame
+    // is turned in the tangent space. Quadratic terms first so that their
+    // coefficients do not depend on FirstOrder.
+    CGAL_CURVATURE_ESTIMATION_UNROLL
+    for (int i = 0; i < D; ++i)
+      CGAL_CURVATURE_ESTIMATION_UNROLL
+      for (int j = i; j < D; ++j)
+        row[column++] = quadratic_scale(i, j) * x[i] * x[j];
+    if constexpr (FirstOrder == 1)
+      CGAL_CURVATURE_ESTIMATION_UNROLL
+      for (int i = 0; i < D; ++i)
+        row[column++] = x[i];
+    if constexpr (LastOrder == 3)
+      CGAL_CURVATURE_ESTIMATION_UNROLL
+      for (int i = 0; i < D; ++i)
+        CGAL_CURVATURE_ESTIMATION_UNROLL
+        for (int j = i; j < D; ++j)
+          CGAL_CURVATURE_ESTIMATION_UNROLL
+          for (int k = j; k < D; ++k)
+            row[column++] = sqrt_multiplicity(i, j, k) * x[i] * x[j] * x[k];
+    if constexpr (FirstOrder == 2 && n > unknowns)
+      CGAL_CURVATURE_ESTIMATION_UNROLL
+      for (int i = 0; i < D; ++i)
+        row[column++] = x[i];
+    // The lower triangle only, row by row: the matrix is symmetric.
+    CGAL_CURVATURE_ESTIMATION_UNROLL
+    for (int i = 0, k = 0; i < n; ++i) {
+      const double weighted = weight * row[i];
+      CGAL_CURVATURE_ESTIMATION_UNROLL
+      for (int j = 0; j <= i; ++j)
+        normal_matrix_[k++] += weighted * row[j];
+      if (i < unknowns)
+        right_hand_side_[i] += weight * height * row[i];
+    }
+    ++size_;
+  }
+
+  // The largest column sum of absolute values of the leading n x n block of a packed symmetric matrix.
+  template <int n, std::size_t size>
+  static double one_norm(const double (&m)[size])
   {
     double largest = 0;
     CGAL_CURVATURE_ESTIMATION_UNROLL
-    for (int j = 0; j < unknowns; ++j) {
+    for (int j = 0; j < n; ++j) {
       double sum = 0;
       CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int i = 0; i < unknowns; ++i)
+      for (int i = 0; i < n; ++i)
         sum += std::abs(m[index(i, j)]);
       largest = sum > largest ? sum : largest;
     }
     return largest;
   }
 
-  // The inverse of a packed symmetric matrix, by Cholesky factorisation in plain
-  // loops over fixed sizes (the compiler unrolls them; Eigen's small triangular
-  // solves are several times slower); false if it is not positive definite.
-  static bool invert(const double (&m)[packed], double (&inverse)[packed])
+  // The inverse of the leading n x n block of a packed symmetric matrix, by
+  // Cholesky factorisation in plain loops over fixed sizes (the compiler unrolls
+  // them; Eigen's small triangular solves are several times slower); false if it
+  // is not positive definite.
+  template <int n, std::size_t size, std::size_t inverse_size>
+  static bool invert(const double (&m)[size], double (&inverse)[inverse_size])
   {
-    constexpr int n = unknowns;
-    double L[packed];  // lower triangular factor, packed
+    static_assert(size >= n * (n + 1) / 2 && inverse_size >= n * (n + 1) / 2, "arrays too small");
+    double L[n * (n + 1) / 2];  // lower triangular factor, packed
     double inverse_diagonal[n];
     CGAL_CURVATURE_ESTIMATION_UNROLL
     for (int j = 0; j < n; ++j) {
@@ -236,10 +420,11 @@ private:
     return true;
   }
 
-  double normal_matrix_[packed];
+  double normal_matrix_[tested_packed];  // add fills the own block, a prefix; solve_whitened all of it
   double right_hand_side_[unknowns];
   int size_ = 0;
   double condition_ = std::numeric_limits<double>::infinity();
+  double whitened_condition_ = std::numeric_limits<double>::infinity();
   Hessian hessian_ = Hessian::Zero();
   Point gradient_ = Point::Zero();
 };
