@@ -122,8 +122,18 @@ struct Paraboloid_estimator
 ///     \cgalParamDefault{`3`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{max_condition_number}
-///     \cgalParamDescription{normal equations whose 1-norm condition number (in coordinates scaled by
-///                           the mean 1-ring edge length) exceeds this value are widened}
+///     \cgalParamDescription{the largest 1-norm condition number of the normal equations of a fit
+///                           (the curvature fit and the normal's) that is accepted. The fit is widened
+///                           ring by ring while it exceeds this value in tangent coordinates scaled by
+///                           the mean 1-ring edge length; where it does on every ring up to
+///                           `max_neighborhood_rings`, the widest neighborhood is accepted if the
+///                           condition number is below this value in tangent coordinates whitened by
+///                           the neighborhood's own second moments, with the linear terms included.
+///                           That number does not change under a linear change of the tangent
+///                           coordinates: a neighborhood of long thin triangles is accepted, one whose
+///                           points lie on a line or on a conic through the vertex (a degenerate
+///                           neighborhood, also once tilted) is not. The cubic fit of a boundary normal
+///                           is allowed 1000 times this value.}
 ///     \cgalParamType{`double`, greater than 1}
 ///     \cgalParamDefault{`1e3`}
 ///   \cgalParamNEnd

@@ -54,6 +54,9 @@ struct Platelet_fit_settings
   int boundary_rings = 1;   // rings a boundary vertex starts with
   int max_rings = 3;        // widening stops here
   double max_condition = 1e3;
+  // Whether test (b) of quadric_fit.h (whitened coordinates) may accept the
+  // widest neighborhood where test (a) refuses every one; false: test (a) alone.
+  bool whitened_conditioning = true;
 };
 
 // The settings from the named parameters, with the documented defaults;
@@ -225,6 +228,7 @@ private:
       finite_.push_back(all_finite(offset));
     }
     on_border_ = neighborhood_.center_on_border(v);
+    curvature_rings_ = 0;
     return true;
   }
 
@@ -257,8 +261,9 @@ private:
     return true;
   }
 
-  // Fits over the rings up to `rings`, widening up to `max_rings` until the
-  // normal equations are well-conditioned; returns the rings used, 0 on failure.
+  // Fits over the rings up to `rings`, widening up to `max_rings` until test (a)
+  // of quadric_fit.h (conditioning in the scaled tangent coordinates) accepts;
+  // returns the rings used, 0 if it accepts none.
   template <typename Fit>
   int fit_widening(const Vector& normal, const Tangents& tangents, int rings, int max_rings, double max_condition,
                    Fit& fit)
@@ -267,6 +272,25 @@ private:
       if (fit_in_frame(normal, tangents, rings, max_condition, fit))
         return rings;
     return 0;
+  }
+
+  // Where test (a) accepts no neighborhood from `rings` to `max_rings`: the
+  // widest of them, if test (b) of quadric_fit.h (conditioning in whitened
+  // coordinates) accepts it, 0 otherwise. A neighborhood that only whitening
+  // makes well-conditioned is anisotropic or uneven; over the data meshes of
+  // test_cgal_data_meshes its fits agree better with a reference on the widest
+  // neighborhood than on the narrowest that test (b) accepts.
+  template <typename Fit>
+  int fit_whitened(const Vector& normal, const Tangents& tangents, int rings, int max_rings, double max_condition,
+                   Fit& fit)
+  {
+    if (!settings_.whitened_conditioning)
+      return 0;
+    int widest = 0;
+    for (; rings <= max_rings && reach(rings); ++rings)
+      widest = rings;
+    const auto samples = [&](const auto& add) { for_each_sample<Fit>(normal, tangents, widest, add); };
+    return widest != 0 && fit.solve_whitened(max_condition, samples) ? widest : 0;
   }
 
   // The neighbourhood's first-order normal, or for quadric_fit a normal of second
@@ -302,16 +326,27 @@ private:
   bool fit_normal(Vector& normal)
   {
     const Tangents tangents = tangent_basis<N>(normal);
+    const int cubic_rings = (std::max)(cubic_normal_min_rings, start_rings());
+    const int cubic_max_rings = (std::max)(cubic_rings, settings_.max_rings);
+    const double cubic_condition = cubic_normal_condition_factor * settings_.max_condition;
     if (on_border_) {
-      const int rings = (std::max)(cubic_normal_min_rings, start_rings());
       Taylor_fit<D, 1, 3> cubic;
-      if (fit_widening(normal, tangents, rings, (std::max)(rings, settings_.max_rings),
-                       cubic_normal_condition_factor * settings_.max_condition, cubic) != 0)
+      if (fit_widening(normal, tangents, cubic_rings, cubic_max_rings, cubic_condition, cubic) != 0)
         return correct_normal(normal, tangents, cubic.gradient());
     }
     Taylor_fit<D, 1, 2> quadratic;
-    return fit_widening(normal, tangents, start_rings(), settings_.max_rings, settings_.max_condition, quadratic) != 0 &&
-           correct_normal(normal, tangents, quadratic.gradient());
+    if (fit_widening(normal, tangents, start_rings(), settings_.max_rings, settings_.max_condition, quadratic) != 0)
+      return correct_normal(normal, tangents, quadratic.gradient());
+    // Test (b), in the same order, where test (a) accepts neither fit.
+    if (on_border_) {
+      Taylor_fit<D, 1, 3> cubic;
+      curvature_rings_ = fit_whitened(normal, tangents, cubic_rings, cubic_max_rings, cubic_condition, cubic);
+      if (curvature_rings_ != 0)
+        return correct_normal(normal, tangents, cubic.gradient());
+    }
+    curvature_rings_ =
+      fit_whitened(normal, tangents, start_rings(), settings_.max_rings, settings_.max_condition, quadratic);
+    return curvature_rings_ != 0 && correct_normal(normal, tangents, quadratic.gradient());
   }
 
   static bool correct_normal(Vector& normal, const Tangents& tangents, const Eigen::Matrix<double, D, 1>& gradient)
@@ -324,7 +359,10 @@ private:
   {
     const Tangents tangents = tangent_basis<N>(normal);
     Taylor_fit<D, 2, 2> fit;
-    const int rings = fit_widening(normal, tangents, start_rings(), settings_.max_rings, settings_.max_condition, fit);
+    const int first = curvature_rings_ != 0 ? (std::min)(curvature_rings_, settings_.max_rings) : start_rings();
+    int rings = fit_widening(normal, tangents, first, settings_.max_rings, settings_.max_condition, fit);
+    if (rings == 0)
+      rings = fit_whitened(normal, tangents, first, settings_.max_rings, settings_.max_condition, fit);
     if (rings == 0)
       return Estimate();
     const Graph_curvature<N> curvature = graph_curvature<N>(fit.hessian(), fit.gradient(), tangents, normal);
@@ -333,21 +371,30 @@ private:
     return Neighborhood::estimate(rings > 1 ? Estimation_status::widened : Estimation_status::ok, curvature, scale_);
   }
 
-  // Samples weighted by a Gaussian of width the mean 1-ring edge in the cubic
-  // fit only (see cubic_normal_min_rings); Hamann's fit is unweighted.
   template <typename Fit>
   bool fit_in_frame(const Vector& normal, const Tangents& tangents, int rings, double max_condition, Fit& fit) const
   {
-    constexpr bool weighted = Fit::unknowns > Taylor_fit<D, 1, 2>::unknowns;
     fit.clear();
+    for_each_sample<Fit>(normal, tangents, rings, [&](const auto& x, double height, double weight) {
+      fit.add(x, height, weight);
+    });
+    return fit.solve(max_condition);
+  }
+
+  // Calls add(x, height, weight) for each sample of the rings up to `rings` in
+  // the frame: samples weighted by a Gaussian of width the mean 1-ring edge in
+  // the cubic fit only (see cubic_normal_min_rings); Hamann's fit is unweighted.
+  template <typename Fit, typename Add>
+  void for_each_sample(const Vector& normal, const Tangents& tangents, int rings, const Add& add) const
+  {
+    constexpr bool weighted = Fit::unknowns > Taylor_fit<D, 1, 2>::unknowns;
     const Eigen::Matrix<double, D, N> to_tangent = tangents.transpose();
-    const std::size_t end = neighborhood_.ring_end(rings);  // hoisted: fit.add writes memory
+    const std::size_t end = neighborhood_.ring_end(rings);  // hoisted: add writes memory
     for (std::size_t i = 1; i < end; ++i) {
       const Vector& q = offsets_[i];
       if (finite_[i])
-        fit.add(to_tangent * q, normal.dot(q), weighted ? std::exp(-q.squaredNorm()) : 1.0);
+        add(Eigen::Matrix<double, D, 1>(to_tangent * q), normal.dot(q), weighted ? std::exp(-q.squaredNorm()) : 1.0);
     }
-    return fit.solve(max_condition);
   }
 
   Neighborhood neighborhood_;
@@ -358,6 +405,10 @@ private:
   double scale_ = 1;
   double inverse_scale_ = 1;     // 1 / scale_, or 0 where that is not a normal number
   bool on_border_ = false;
+  // Where the normal fit needed test (b), the curvature fit starts on the rings
+  // that gave the normal (the widest; the narrower ones failed test (a) for the
+  // normal). 0: it starts on the settings' rings.
+  int curvature_rings_ = 0;
 };
 
 // The neighbourhood policy of a FaceGraph: k-rings by halfedge circulation, the
