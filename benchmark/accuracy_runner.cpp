@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Accuracy of every estimator of benchmark/estimators.h against exact curvature,
 // written as CSV for benchmark/make_report.py.
 //

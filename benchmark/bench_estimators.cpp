@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Speed of every estimator of benchmark/estimators.h, in ns per vertex (the
 // `time_per_vertex` counter: seconds per vertex, e.g. 95n), and heap allocations per
 // vertex and call (`allocations_per_vertex`, all threads), on Surface_mesh:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The estimators the benchmark report compares, and the inputs it times, in one
 // place: the speed benchmark (bench_estimators.cpp) and the accuracy runner
 // (accuracy_runner.cpp) both iterate over `estimators()`, so that a variant added

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Writes benchmark/REPORT.md and benchmark/figures/*.png from the outputs of
 bench_estimators (Google Benchmark JSON) and accuracy_runner (CSV).
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Test/example meshes from CGAL's data archive (Debian package libcgal-demo).
 #
 # ce_extract_data([ARCHIVE <path>] [DESTINATION <dir>])

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Estimates curvature on a mesh file with Wollmann's curve network and prints a
 // summary. Without an argument it reads the Stanford bunny shipped by Debian's
 // libcgal-demo package.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Estimates curvature on a mesh file with the Gauss-map method of Chen, Wu and
 // Chi and with its two baselines (Taubin, Chen-Schmitt), and compares the
 // median |H| of the three. Without an argument it reads the Stanford bunny

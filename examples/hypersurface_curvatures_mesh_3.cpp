@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Meshes the unit ball with CGAL Mesh_3, defines a scalar field f on its vertices,
 // and estimates the three principal curvatures of the graph W = f(x, y, z), a
 // hypersurface of R^4, directly on the C3T3's triangulation.

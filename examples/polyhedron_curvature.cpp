@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Principal curvatures on a CGAL::Polyhedron_3, with the outputs in
 // std::map-backed property maps (Polyhedron_3 has no vertex index of its own).
 //

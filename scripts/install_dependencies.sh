@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Install the Debian 12 packages needed to build, test and document the
 # CGAL curvature estimation package. Idempotent: exits at once when every
 # package is already installed.

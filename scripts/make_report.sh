@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Regenerates the benchmark report in one command: installs the dependencies,
 # builds the benchmarks (Release), runs the speed benchmarks (Google Benchmark,
 # JSON) and the accuracy runner (CSV), then writes the report with plots.

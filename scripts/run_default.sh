@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The main job: build the command-line tool `curvature` and print the curvature
 # summary of a mesh (default: the Stanford bunny extracted from CGAL's data
 # archive at configure time, build/data/meshes/bunny00.off).

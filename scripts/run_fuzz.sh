@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # A short, deterministic run of the libFuzzer target of the tool's input path
 # (tools/fuzz_tool_input.cpp): clang build with ASan + UBSan, then CTest's
 # fuzz_tool_input_short, which runs -seed=1 -runs=$FUZZ_RUNS from the seeds in

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # AddressSanitizer + UndefinedBehaviorSanitizer build of the tool and of the tests
 # that exercise bad input (test_tool runs the sanitized tool on every bad and
 # degenerate input), then CTest on them. Any sanitizer report fails the run.

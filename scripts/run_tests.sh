@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Configure (Release, tests + examples ON), build everything, run CTest.
 # env: BUILD_DIR (default ./build), JOBS (default nproc),
 #      CGAL_DIR (a CGAL other than the system's, e.g. ../shared/cgal-6.1.1/lib/cmake/CGAL;

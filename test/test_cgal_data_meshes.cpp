@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every estimator, with its defaults, on every surface mesh of CGAL's data
 // archive (Debian's /usr/share/doc/libcgal-dev/data.tar.gz): every OFF, PLY and
 // STL file with faces (142 files, 414,841 vertices with CGAL 5.5's archive),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of the shared test utilities (test/common/test_surfaces.h) against independent facts:
 // closed-form curvatures of known surfaces, finite differences, Rodrigues' formula, Eigen's
 // generalized eigensolver, and the topology/orientation of the generated meshes.

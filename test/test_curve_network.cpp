@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Wollmann's curve-network estimator: the pure curve and Euler functions on exact
 // inputs, the paper's Fig. 3 (convergence orders 2, 4, 6 on a parametric
 // ellipsoid), curve_network_curvatures on grid and irregular meshes (orders,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // gauss_map_curvatures (Chen, Wu and Chi 2005) and its baselines taubin_curvatures
 // and chen_schmitt_curvatures: exactness, sign convention, the paper's random
 // polynomial experiment against published reference medians, convergence with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hamann's paraboloid fitting on tetrahedral hypersurfaces of R^4 (thesis §4.3):
 // the reproduction of Table 4.2, convergence, invariance, complex-type independence.
 #include <CGAL/Curvature_estimation/hypersurface_paraboloid_fitting.h>

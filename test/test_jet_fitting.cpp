@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // jet_fitting_curvatures: CGAL's jet fitting behind this package's interface.
 #include <CGAL/Curvature_estimation/jet_fitting.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of the numerical core shared by the paraboloid-fitting estimators, on
 // exact inputs and without any mesh:
 //   internal/tangent_frame.h   tangent_basis<N>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every estimator of the package, with its defaults, on marching-tetrahedra meshes of three
 // smooth closed surfaces (test/common/marching_tetrahedra.h: slivers, uneven valence, vertices on
 // the exact surface) at 20, 40 and 80 cells per axis: the RMS and the maximum of |H - H_exact|

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of CGAL/Curvature_estimation/parameters.h: this package's named
 // parameters and the CGAL ones its functions read chain in any order, CGAL's
 // lookup machinery accepts the resulting packs, and paraboloid_fitting_curvatures

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // paraboloid_fitting_curvatures on meshes: reproduction of Hamann's Table 1,
 // convergence and sign on closed surfaces, invariances, mesh-type independence,
 // concurrency, irregular meshes and bad input.

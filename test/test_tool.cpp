@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of the command-line tool `curvature` (tools/curvature.cpp), run as a
 // subprocess on small files written to a temporary directory:
 //  - bad input: non-zero exit, exactly one line on stderr, no output file left;

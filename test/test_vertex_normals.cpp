@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tests of CGAL/Curvature_estimation/vertex_normals.h
 #include <CGAL/Curvature_estimation/vertex_normals.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Writing an output file all or nothing: an error (a Tool_error) leaves no
 // partial file, and an existing file is replaced only by a complete one.
 #ifndef CE_TOOLS_ATOMIC_FILE_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The command line of `curvature`: its options, their checks, the help text.
 #ifndef CE_TOOLS_COMMAND_LINE_H
 #define CE_TOOLS_COMMAND_LINE_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // curvature: estimates curvature at the vertices of a surface mesh file, or of
 // the graph W = f(x, y, z) of a scalar field over a tetrahedral mesh.
 //

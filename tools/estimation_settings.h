@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What every estimation of the tool shares: the concurrency --threads asks for,
 // the rings --rings asks for, and the library's exceptions as the tool's errors.
 #ifndef CE_TOOLS_ESTIMATION_SETTINGS_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target for the input path of the `curvature` tool: the bytes are an
 // input file, the first byte picks its format (.off .ply .obj .stl .mesh). For
 // .mesh, the bytes up to the first NUL are the .mesh and the bytes after it the

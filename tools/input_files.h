@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The tool's access to its input files: formats are told by extension, and a
 // file is checked to be a readable regular file before any reader sees it.
 #ifndef CE_TOOLS_INPUT_FILES_H

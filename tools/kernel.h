@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The geometry every part of the tool shares: points read from files and given
 // to the estimators are points of this kernel.
 #ifndef CE_TOOLS_KERNEL_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Strict readers of the tool's text formats: OFF (surfaces), Medit .mesh
 // (tetrahedra) and Medit .sol (a scalar per vertex).
 //

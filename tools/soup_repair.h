@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // From the file's polygon soup to a mesh the estimators accept: CGAL's soup
 // repair and orientation, with one note on stderr of what they changed, and the
 // map from the file's vertices to the mesh's, by which the outputs keep the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The summary the tool prints on stdout when no output file is asked for: the
 // input, the method, the time, the ranges of H and K and the status counts.
 #ifndef CE_TOOLS_SUMMARY_H

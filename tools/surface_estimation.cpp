@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "surface_estimation.h"
 
 #include "estimation_settings.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Surface estimation: which estimator --method picks, with which named
 // parameters, and its outputs as one row per vertex of the input file.
 #ifndef CE_TOOLS_SURFACE_ESTIMATION_H

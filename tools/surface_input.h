@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Surface input: a polygon soup from an OFF, PLY, OBJ or STL file, checked for
 // what the later steps need (vertices, faces, finite coordinates, valid indices).
 #ifndef CE_TOOLS_SURFACE_INPUT_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tetrahedral input: the graph W = f(x, y, z) over a Medit .mesh, f from a .sol,
 // read, oriented, and estimated as a hypersurface of R^4.
 #ifndef CE_TOOLS_TETRAHEDRAL_H

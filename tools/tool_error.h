@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The tool's errors: every error a user can cause is thrown as a Tool_error and
 // ends in main as one line on stderr and the error's exit code.
 #ifndef CE_TOOLS_TOOL_ERROR_H

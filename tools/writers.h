@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The tool's output files: CSV (surfaces and tetrahedral input) and binary PLY
 // with the colour map (surfaces), as text ready for write_file_atomically.
 #ifndef CE_TOOLS_WRITERS_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Umbrella header of the curvature estimation package.
 #ifndef CGAL_CURVATURE_ESTIMATION_H
 #define CGAL_CURVATURE_ESTIMATION_H

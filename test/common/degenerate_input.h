@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Bad input shared by the estimators' tests: a small graph mesh with a vertex in no face
 // and a vertex with a NaN coordinate, and the GoogleTest checks of the outputs there.
 #ifndef CE_TEST_COMMON_DEGENERATE_INPUT_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Running an estimator with every output requested and comparing the results
 // with exact curvature: shared by the estimators' tests.
 #ifndef CE_TEST_ESTIMATOR_RUNS_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Kuhn triangulation of a cube grid: the tetrahedral meshes of the hypersurface tests
 // and of the tool's tests of Medit input.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Realistic meshes with exact curvature: marching tetrahedra of implicit surfaces F = 0
 // (F < 0 inside), every vertex projected onto the exact surface by Newton steps.
 //

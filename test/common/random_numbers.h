@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Deterministic random numbers for the tests and the accuracy benchmarks: the same values
 // on every standard library, as they use only the raw output of std::mt19937 (whose
 // sequence the C++ standard fixes; std::uniform_real_distribution's is not).

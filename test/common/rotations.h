@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Rotations of R^3 for the tests of invariance under rigid motions.
 //
 // Header-only, no GoogleTest dependency; everything lives in namespace `ce_test`.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Looking up a named property map of a CGAL::Surface_mesh, in one spelling for CGAL 5.x
 // (which returns a pair of the map and whether it was found) and CGAL 6 (std::optional).
 #ifndef CE_TEST_COMMON_SURFACE_MESH_PROPERTIES_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Test surfaces with exact curvature, mesh builders and error statistics,
 // shared by the tests and the accuracy benchmarks of CGAL::Curvature_estimation.
 //

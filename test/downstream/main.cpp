@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Minimal consumer of CGAL::Curvature_estimation: compiles against the public
 // header and estimates curvature on an icosahedron. No C++ standard is set by the downstream
 // project: C++17 must come from the target's usage requirements, and so must

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Build and run the downstream consumer project test/downstream/.
 #
 #   cmake -DCE_MODE=find_package|add_subdirectory

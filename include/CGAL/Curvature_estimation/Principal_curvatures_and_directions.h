@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Output value types shared by every estimator of the package.
 #ifndef CGAL_CURVATURE_ESTIMATION_PRINCIPAL_CURVATURES_AND_DIRECTIONS_H
 #define CGAL_CURVATURE_ESTIMATION_PRINCIPAL_CURVATURES_AND_DIRECTIONS_H

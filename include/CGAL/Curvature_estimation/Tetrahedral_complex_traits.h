@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The TetrahedralComplex concept's adapters (CGAL::Triangulation_3 and an indexed
 // tetrahedral mesh), vertex stars gathered once, and points of R^4.
 #ifndef CGAL_CURVATURE_ESTIMATION_TETRAHEDRAL_COMPLEX_TRAITS_H

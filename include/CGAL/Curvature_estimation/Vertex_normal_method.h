@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The ways of estimating a vertex normal, a parameter of every estimator that needs normals.
 #ifndef CGAL_CURVATURE_ESTIMATION_VERTEX_NORMAL_METHOD_H
 #define CGAL_CURVATURE_ESTIMATION_VERTEX_NORMAL_METHOD_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Chen and Schmitt's least-squares fit of Euler's formula, on any FaceGraph.
 #ifndef CGAL_CURVATURE_ESTIMATION_CHEN_SCHMITT_H
 #define CGAL_CURVATURE_ESTIMATION_CHEN_SCHMITT_H

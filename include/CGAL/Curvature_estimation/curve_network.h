@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Wollmann's curve-network estimator on any FaceGraph: curvature of mesh curves
 // through the vertex, Meusnier's and Euler's theorems, orders O(h^2) and O(h^2n).
 #ifndef CGAL_CURVATURE_ESTIMATION_CURVE_NETWORK_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Chen, Wu and Chi's estimator: the differential of the Gauss map, on any FaceGraph.
 #ifndef CGAL_CURVATURE_ESTIMATION_GAUSS_MAP_H
 #define CGAL_CURVATURE_ESTIMATION_GAUSS_MAP_H

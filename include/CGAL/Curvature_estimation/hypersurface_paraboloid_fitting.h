@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hamann's paraboloid fitting over the tetrahedral platelet of a 3-dimensional
 // hypersurface of R^4 (Hamann's thesis §4.3), on any TetrahedralComplex.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // CGAL's jet fitting (Monge_via_jet_fitting, Cazals and Pouget) behind this
 // package's interface, neighbourhoods and conventions, for like-for-like comparisons.
 #ifndef CGAL_CURVATURE_ESTIMATION_JET_FITTING_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hamann's paraboloid fitting over the vertex platelet, on any FaceGraph.
 #ifndef CGAL_CURVATURE_ESTIMATION_PARABOLOID_FITTING_H
 #define CGAL_CURVATURE_ESTIMATION_PARABOLOID_FITTING_H

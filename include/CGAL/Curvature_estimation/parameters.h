@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Named parameters of the curvature estimation package.
 //
 // CGAL 5.5 cannot be taught new member functions for chaining, so this package

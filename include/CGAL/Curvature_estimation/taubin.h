@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Taubin's estimator of the tensor of curvature (Taubin 1995), on any FaceGraph.
 #ifndef CGAL_CURVATURE_ESTIMATION_TAUBIN_H
 #define CGAL_CURVATURE_ESTIMATION_TAUBIN_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Vertex normals of a surface mesh as weighted averages of face normals.
 //
 // The per-vertex kernel `internal::face_average_normal()` is a pure function of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Curvature, tangent and principal normal of a space curve known by a few points
 // (Wollmann 2000, sections 2, 3 and 5): the circle through three points
 // (Todd and McLeod 1986), the quadratic Bezier segment through three points

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The way from a public estimator's call to its output maps, written once for
 // every estimator: the vertex point map, the given normals, the vertex loop
 // (sequential or parallel) and the outputs. What differs between estimators is a

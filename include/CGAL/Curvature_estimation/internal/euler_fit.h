@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Euler's theorem fitted to normal curvatures: the one least-squares core of the
 // estimators that measure normal curvatures along tangent directions (Chen and
 // Schmitt 1992; Wollmann 2000).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The face-averaged normal at one vertex: the first-order normal that every
 // estimator can start from.
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_FACE_AVERAGE_NORMAL_H

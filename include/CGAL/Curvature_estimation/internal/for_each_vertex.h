@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The vertex loop shared by the estimators: sequential, or TBB-parallel in blocks.
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_FOR_EACH_VERTEX_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_FOR_EACH_VERTEX_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The differential of the Gauss map at a vertex (Chen, Wu and Chi 2005, section 4):
 // per-face gradients of the three normal components (eqs. 19-21), combined with
 // centroid weights (eqs. 22-24), projected on a tangent frame (eq. 28).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The local coordinates of every estimator: points of the mesh in double, taken
 // relative to the vertex and divided by a local length (a mean distance to the
 // neighbors), which makes the estimates scale invariant.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // From curves on a surface to the surface's curvature (Wollmann 2000, sections 1
 // and 4): the surface normal from the curves' tangents, Meusnier's theorem for
 // the normal curvature of each curve, and Euler's theorem solved for the

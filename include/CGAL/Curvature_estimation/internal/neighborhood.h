@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // k-ring neighbourhoods of a vertex of a FaceGraph or of a tetrahedral complex,
 // grown one ring at a time so that an estimator can widen its stencil without
 // gathering it again.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Normal-curvature samples at a vertex, the common input of Taubin's tensor and
 // of Chen and Schmitt's Euler fit (Chen, Wu and Chi 2005, section 3):
 // for every neighbour q_i joined to the vertex p by an edge, the unit tangent

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hamann's platelet fit at one vertex, written once for surfaces of R^3
 // (FaceGraph, tangent dimension 2) and hypersurfaces of R^4 (tetrahedral
 // complexes, tangent dimension 3): gather the k-ring, express it in a tangent

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Least-squares Taylor fit of a height function over a tangent space, the
 // numerical core shared by the surface (D = 2) and hypersurface (D = 3)
 // estimators:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The estimators that end with a 2x2 shape matrix in a tangent frame (Gauss map,
 // Taubin, Chen-Schmitt): curvatures from the matrix, and the local length scale.
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_SHAPE_MATRIX_ESTIMATE_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Principal curvatures and directions of the graph of a height function over a
 // tangent frame, at the frame's origin.
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_SHAPE_OPERATOR_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What every surface estimator computes at a vertex, and its writing into the
 // output maps the user passed: one place for the outputs of all estimators.
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_SURFACE_ESTIMATE_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The symmetric eigen-solvers of the package, in one place. The policy:
 //  - a shape operator (2 x 2 for surfaces, 3 x 3 for hypersurfaces), whose eigenvalues
 //    are the curvatures: symmetric_eigen, in closed form for 2 x 2 (Eigen's direct 2 x 2

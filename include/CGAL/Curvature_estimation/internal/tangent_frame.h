@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Orthonormal basis of the tangent space orthogonal to a unit normal, any dimension.
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_TANGENT_FRAME_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_TANGENT_FRAME_H
