@@ -282,7 +282,7 @@ def speed_section(speed, figures, quick):
     if ALLOCATIONS:
         lines += ["### Heap allocations per vertex and call (all threads)", "",
                   "Counted by `bench_estimators` (its own `operator new`), seq / par. A bounded number per call "
-                  "(buffers that grow to the largest neighbourhood, one worker per thread, TBB) shrinks as "
+                  "(buffers that grow to the largest neighborhood, one worker per thread, TBB) shrinks as "
                   "1/vertices; an allocation per vertex shows as 1 or more.", ""]
         rows = []
         for e, _ in ESTIMATORS:

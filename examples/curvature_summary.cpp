@@ -78,6 +78,6 @@ int main(int argc, char** argv)
             << "time: " << seconds * 1e3 << " ms (" << seconds * 1e9 / num_vertices(mesh) << " ns per vertex)\n";
   print_range("mean curvature H", H);
   print_range("Gaussian curvature K", K);
-  std::cout << "widened neighbourhoods: " << widened << ", not estimable: " << failed << '\n';
+  std::cout << "widened neighborhoods: " << widened << ", not estimable: " << failed << '\n';
   return 0;
 }

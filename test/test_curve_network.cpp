@@ -552,7 +552,7 @@ TEST(Curve_network, BadInputAndParameters)
   const Estimates e = estimate(mesh);
   for (Mesh::Vertex_index v : {isolated, broken})
     ce_test::expect_not_estimable(e, v);
-  // The NaN vertex's neighbours lose a curve and fall back, finite.
+  // The NaN vertex's neighbors lose a curve and fall back, finite.
   ce_test::expect_neighbors_estimated(e, mesh, broken);
   Mesh empty;
   EXPECT_NO_THROW(estimate(empty));

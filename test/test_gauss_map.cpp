@@ -165,7 +165,7 @@ TEST(Gauss_map, PlaneGivesZeroForEveryEstimatorAndNormalChoice)
 
 TEST(Gauss_map, BaselinesAreExactWhereTheirFormulasAreOnASphereWithExactNormals)
 {
-  // Every neighbour of a sphere's vertex lies on the circle of radius r tangent
+  // Every neighbor of a sphere's vertex lies on the circle of radius r tangent
   // to the plane: k_n(t_i) = 1/r exactly. Euler's formula then fits C1 = C3 = 1/r,
   // C2 = 0 exactly (Chen-Schmitt is exact). Taubin's tensor is (1/r) sum w_i t_i t_i^T,
   // of trace 1/r: its H = (k1 + k2)/2 = tr M is exact, its k1, k2 only on
@@ -292,7 +292,7 @@ TEST(Gauss_map, RandomPolynomialFansReproduceTheReferenceMedians)
   const Reference reference[settings] = {{"Taubin, area weights", 0.957, 0.662},
                                          {"Taubin, centroid weights", 1.015, 0.645},
                                          {"Chen-Schmitt", 0.885, 0.564},
-                                         {"Gauss map, exact neighbour normals", 0.417, 0.243},
+                                         {"Gauss map, exact neighbor normals", 0.417, 0.243},
                                          // The issue quotes "2.0" for Err(K) only, as an order of magnitude: printed, not checked.
                                          {"Gauss map, centroid normals everywhere", 0, 0},
                                          {"Gauss map, our default normals", 0, 0}};
@@ -341,7 +341,7 @@ TEST(Gauss_map, RandomPolynomialFansReproduceTheReferenceMedians)
       for (int i = 0; i < n_v; ++i)
         ASSERT_NE(mesh.add_face(centre, ring[i], ring[(i + 1) % n_v]), Mesh::null_face());
     }
-    // The Gauss map's setting: the centroid-weighted normal at the centre, exact normals at the neighbours.
+    // The Gauss map's setting: the centroid-weighted normal at the centre, exact normals at the neighbors.
     auto centroid_normals = mesh.add_property_map<vertex_descriptor, Vector>("v:centroid_normal").first;
     CE::estimate_vertex_normals(mesh, centroid_normals,
                                 params::vertex_normal_method(Vertex_normal_method::centroid_weighted));
@@ -391,7 +391,7 @@ TEST(Gauss_map, RandomPolynomialFansReproduceTheReferenceMedians)
                   100 * (h / reference[setting].err_H - 1));
     else
       std::printf("  %-36s K %.3f              H %.3f\n", reference[setting].name, k, h);
-    // Every centre has 5 to 8 neighbours spread over more than a half-turn: always estimable.
+    // Every centre has 5 to 8 neighbors spread over more than a half-turn: always estimable.
     EXPECT_EQ(not_estimable[setting], 0u) << reference[setting].name;
     if (reference[setting].err_K > 0) {
       EXPECT_NEAR(k, reference[setting].err_K, 0.1 * reference[setting].err_K) << reference[setting].name;
@@ -543,7 +543,7 @@ TEST(Gauss_map, DefaultNormalsWorkOnQuadFacesWithBoundary)
 // Bad input, concurrency
 // ---------------------------------------------------------------------------
 
-TEST(Gauss_map, IsolatedAndNaNVerticesAreNotEstimableWithoutHarmingNeighbours)
+TEST(Gauss_map, IsolatedAndNaNVerticesAreNotEstimableWithoutHarmingNeighbors)
 {
   auto [mesh, isolated, broken] = ce_test::grid_with_isolated_and_nan_vertex<Mesh>();
   for (Method method : all_methods) {

@@ -529,7 +529,7 @@ TEST(Hypersurface_paraboloid_fitting, EpickDPointsAreAccepted)
 
 TEST(Hypersurface_paraboloid_fitting, NotEstimableVerticesGetNaNAndStatus)
 {
-  // One tetrahedron (3 neighbours for 6 unknowns, nothing to widen to), an isolated
+  // One tetrahedron (3 neighbors for 6 unknowns, nothing to widen to), an isolated
   // vertex, and a vertex with a NaN coordinate in a good grid.
   const Function fn = table_functions()[1];
   Grid g = make_grid(6, fn);

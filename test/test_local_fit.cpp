@@ -862,7 +862,7 @@ TEST(Conditioning, FewerSamplesThanUnknownsAreRejected)
 
 TEST(Conditioning, Valence6StencilIsWellConditioned)
 {
-  // The 6 neighbours of a valence-6 vertex of a triangulated grid.
+  // The 6 neighbors of a valence-6 vertex of a triangulated grid.
   const std::vector<Vec<2>> xs = {Vec<2>(1, 0), Vec<2>(-1, 0), Vec<2>(0, 1), Vec<2>(0, -1), Vec<2>(1, -1), Vec<2>(-1, 1)};
   CEI::Taylor_fit<2, 2, 2> fit;
   for (const Vec<2>& x : xs)

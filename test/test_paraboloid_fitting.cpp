@@ -365,7 +365,7 @@ TEST(Paraboloid_fitting, IrregularDelaunayMeshIsFiniteEverywhereAndConverges)
   }
 }
 
-TEST(Paraboloid_fitting, DegenerateInputGetsNotEstimableAndNaNWithoutHarmingNeighbours)
+TEST(Paraboloid_fitting, DegenerateInputGetsNotEstimableAndNaNWithoutHarmingNeighbors)
 {
   // A grid of a paraboloid, plus: an isolated vertex, a vertex with NaN
   // coordinates in the grid, and a lone triangle (too few points even widened).
@@ -377,7 +377,7 @@ TEST(Paraboloid_fitting, DegenerateInputGetsNotEstimableAndNaNWithoutHarmingNeig
   const Estimates e = estimate(mesh);
   for (Mesh::Vertex_index v : {isolated, a, b, c, broken})
     ce_test::expect_not_estimable(e, v);
-  // The NaN vertex's neighbours still get finite estimates from their other neighbours.
+  // The NaN vertex's neighbors still get finite estimates from their other neighbors.
   ce_test::expect_neighbors_estimated(e, mesh, broken);
 
   Mesh empty;
@@ -387,7 +387,7 @@ TEST(Paraboloid_fitting, DegenerateInputGetsNotEstimableAndNaNWithoutHarmingNeig
 TEST(Paraboloid_fitting, ExactNormalsOnAGridWidenOnlyWhereTheOneRingIsIllConditioned)
 {
   // With exact normals the interior 1-ring of the grid is well-conditioned and
-  // stays 1-ring; the corners with two neighbours cannot be fitted on their
+  // stays 1-ring; the corners with two neighbors cannot be fitted on their
   // 1-ring and widen. No vertex fails.
   const ce_test::Graph_function f = ce_test::hamann_table1_functions()[4];
   const std::size_t n = 21;
@@ -405,7 +405,7 @@ TEST(Paraboloid_fitting, ExactNormalsOnAGridWidenOnlyWhereTheOneRingIsIllConditi
         EXPECT_NE(s, Estimation_status::not_estimable) << i << ' ' << j;
       }
     }
-  EXPECT_EQ(e.status[0], Estimation_status::widened);              // corner (0, 0): two neighbours
+  EXPECT_EQ(e.status[0], Estimation_status::widened);              // corner (0, 0): two neighbors
   EXPECT_EQ(e.status[n * n - 1], Estimation_status::widened);      // corner (n-1, n-1)
 }
 

@@ -652,7 +652,7 @@ TEST_F(DegenerateTest, BoundaryAndTinyComponents)
   Indexed m{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 2, 2}, {3, 2, 2}}, {{0, 1, 2}, {3, 4}}};
   append(m, tetrahedron(0.5, 10));
   append(m, Indexed{{{20, 0, 0}, {21, 0, 0}, {21, 1, 0}, {20, 1, 0}}, {{0, 1, 2, 3}}});
-  // A strip of two triangles: its end vertices have two neighbours, one of them on one face.
+  // A strip of two triangles: its end vertices have two neighbors, one of them on one face.
   append(m, Indexed{{{30, 0, 0}, {31, 0, 0}, {30, 1, 0.2}, {31, 1, 0.1}}, {{0, 1, 2}, {1, 3, 2}}});
   const auto all = all_methods(file("tiny.off", off(m)), m.points.size(), "tiny components");
   for (const auto& rows : all) {
@@ -707,7 +707,7 @@ TEST_F(ToolTest, SphereMeanCurvatureIsOneOverR)
 
 // Higher jets on the same sphere (more coefficients, so fits widen to the 2-ring):
 // measured max |H r - 1| 0.028 for degree 3 (odd jets fit the symmetric
-// neighbourhood worse) and 0.0009 for degree 4, within the tolerance above.
+// neighborhood worse) and 0.0009 for degree 4, within the tolerance above.
 TEST_F(ToolTest, JetDegreesAndMongeDegrees)
 {
   const double r = 2.5;

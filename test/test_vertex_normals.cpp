@@ -435,7 +435,7 @@ TEST(VertexNormals, NonFiniteCoordinatesGiveNotEstimableWithoutCrash)
   const vertex_descriptor i0 = m.add_vertex(Point(inf, 0, 0)), i1 = m.add_vertex(Point(21, 0, 0)),
                           i2 = m.add_vertex(Point(20, 1, 0));
   m.add_face(i0, i1, i2);
-  // a huge but finite triangle: every vertex has a neighbour whose coordinate difference overflows
+  // a huge but finite triangle: every vertex has a neighbor whose coordinate difference overflows
   const double big = std::numeric_limits<double>::max();
   const vertex_descriptor h0 = m.add_vertex(Point(-big, 0, 0)), h1 = m.add_vertex(Point(big, 0, 0)),
                           h2 = m.add_vertex(Point(-big, big, 0));

@@ -22,7 +22,7 @@ constexpr const char* usage_text =
   "  -m, --method M     paraboloid (default) | curve-network | gauss-map | taubin | chen-schmitt | jet\n"
   "                     (.mesh input: paraboloid only)\n"
   "  -o, --output FILE  FILE.csv or FILE.ply (surfaces only); without it, print a summary only\n"
-  "      --rings N      neighbourhood rings a vertex's estimate starts with (default 1;\n"
+  "      --rings N      neighborhood rings a vertex's estimate starts with (default 1;\n"
   "                     paraboloid, gauss-map, taubin, chen-schmitt, jet, and .mesh input)\n"
   "      --order N      extrapolation order of curve-network, 1..4 (default 1)\n"
   "      --degree D     degree of the jet (jet only), 2..4 (default 2)\n"

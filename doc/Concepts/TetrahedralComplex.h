@@ -9,7 +9,7 @@ given by its four vertices. The estimator
 through the traits class `CGAL::Curvature_estimation::Tetrahedral_complex_traits`, in the way
 the BGL reads a graph through `boost::graph_traits`: a type is a model when the traits
 class is specialized for it with the types and static functions below. Nothing else is
-required; in particular no incidence structure: the vertex stars (incident cells, neighbours,
+required; in particular no incidence structure: the vertex stars (incident cells, neighbors,
 boundary flags) are built once from the cells by
 `CGAL::Curvature_estimation::Tetrahedral_complex_stars`, never by scanning all cells per vertex.
 

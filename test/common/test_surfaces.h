@@ -451,7 +451,7 @@ inline Soup jittered_grid_graph_soup(const Graph_function& g, std::size_t n, dou
 ///  - with s = round(sqrt(n_points)) and h = (hi-lo)/(s-1) (the spacing of a grid of the same size):
 ///  - indices 0..3: the corners (lo,lo), (hi,lo), (hi,hi), (lo,hi);
 ///  - then s-2 points on each side (bottom, right, top, left), stratified: the k-th at
-///    k*h + uniform[-0.3h, 0.3h) from the side's start, so neighbours are >= 0.4h apart;
+///    k*h + uniform[-0.3h, 0.3h) from the side's start, so neighbors are >= 0.4h apart;
 ///  - then the rest at random in the interior, by dart throwing: uniform in
 ///    [lo + h/4, hi - h/4]^2, rejected if closer than h/2 to an accepted point (no slivers from
 ///    near-coincident points).

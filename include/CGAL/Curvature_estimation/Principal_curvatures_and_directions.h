@@ -59,10 +59,10 @@ struct Principal_curvatures_and_directions
 /// `vertex_estimation_status_map`.
 enum class Estimation_status : unsigned char
 {
-  ok,            ///< estimated from the neighbourhood asked for (by default the 1-ring)
-  widened,       ///< estimated from a neighbourhood wider than the 1-ring, because the 1-ring
+  ok,            ///< estimated from the neighborhood asked for (by default the 1-ring)
+  widened,       ///< estimated from a neighborhood wider than the 1-ring, because the 1-ring
                  ///< was too small or ill-conditioned (or because wider rings were asked for)
-  not_estimable, ///< no estimate: isolated vertex, degenerate neighbourhood, invalid input; values are NaN
+  not_estimable, ///< no estimate: isolated vertex, degenerate neighborhood, invalid input; values are NaN
   fallback       ///< estimated by the estimator's documented fallback method, because its own method
                  ///< does not apply at the vertex (`curve_network_curvatures()`: no curve network there)
 };

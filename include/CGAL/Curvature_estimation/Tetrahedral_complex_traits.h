@@ -129,7 +129,7 @@ struct Tetrahedral_complex_traits<Tr, std::void_t<decltype(std::declval<const Tr
 /// \ingroup PkgCurvatureEstimationRef
 /// The vertex stars of a tetrahedral complex, gathered once in O(C log C) for C cells:
 /// the vertices in a dense order, the cells as index quadruples, the incident cells and
-/// the neighbours (vertices sharing a cell) of each vertex in CSR arrays, and whether a
+/// the neighbors (vertices sharing a cell) of each vertex in CSR arrays, and whether a
 /// vertex lies on the boundary (on a triangle that belongs to one cell only).
 template <typename Complex>
 struct Tetrahedral_complex_stars
@@ -185,7 +185,7 @@ private:
         for (std::size_t v : cells[k])
           incident_cells[fill[v]++] = k;
     }
-    // Neighbours: the other vertices of the incident cells, without repeats.
+    // Neighbors: the other vertices of the incident cells, without repeats.
     neighbor_offsets.assign(n + 1, 0);
     neighbors.clear();
     neighbors.reserve(incident_cells.size() * 2);

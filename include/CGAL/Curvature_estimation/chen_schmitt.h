@@ -22,7 +22,7 @@ namespace Curvature_estimation {
 /// every vertex of a surface mesh by Chen and Schmitt's method (Chen and Schmitt
 /// 1992, as reviewed by Chen, Wu and Chi 2005, section 3.1): the normal curvatures
 /// `k_i = 2 <p - q_i, N> / |q_i - p|^2` along the unit
-/// tangents `t_i = (costheta_i, sintheta_i)` towards the neighbours
+/// tangents `t_i = (costheta_i, sintheta_i)` towards the neighbors
 /// `q_i` joined to the vertex p by an edge (as in `taubin_curvatures()`) are
 /// fitted by unweighted least squares with Euler's formula
 /// `k(theta) = C_1 cos^2theta + C_2 costheta sintheta + C_3 sin^2theta`;
@@ -38,7 +38,7 @@ namespace Curvature_estimation {
 /// **Conventions.** A sphere with outward normals has `max_curvature == min_curvature == 1/r`;
 /// `max_curvature >= min_curvature`; directions are unit, tangent and orthogonal;
 /// K is `max_curvature * min_curvature`. A vertex with no normal, or with fewer
-/// than three neighbour directions distinct modulo pi (for instance a corner of a
+/// than three neighbor directions distinct modulo pi (for instance a corner of a
 /// grid), gets NaN in every output and the status `Estimation_status::not_estimable`.
 ///
 /// Only the outputs whose maps are passed are written; passing none does nothing.
@@ -88,7 +88,7 @@ namespace Curvature_estimation {
 ///     \cgalParamDefault{the value of `neighborhood_rings`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{max_neighborhood_rings}
-///     \cgalParamDescription{`quadric_fit` normals only: the widest neighbourhood an ill-conditioned fit is widened to}
+///     \cgalParamDescription{`quadric_fit` normals only: the widest neighborhood an ill-conditioned fit is widened to}
 ///     \cgalParamType{`int`, at least the two values above}
 ///     \cgalParamDefault{`3`}
 ///   \cgalParamNEnd

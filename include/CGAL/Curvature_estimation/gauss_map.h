@@ -28,7 +28,7 @@ namespace Curvature_estimation {
 /// Estimates principal curvatures and directions, mean and Gaussian curvature at
 /// every vertex of a surface mesh by the differential of the Gauss map (Chen, Wu
 /// and Chi 2005). The three components of the vertex normals are interpolated
-/// linearly over each corner (the vertex and its two neighbours in an incident
+/// linearly over each corner (the vertex and its two neighbors in an incident
 /// face); their gradients (the paper's eqs. 19-21) form the 3x3 Jacobian of the
 /// normal on that face; the Jacobians are averaged with centroid weights
 /// `1/|G_f - v|^2` (eq. 23) and projected on a tangent frame of the vertex
@@ -41,11 +41,11 @@ namespace Curvature_estimation {
 /// Boundary vertices use the faces they have, and faces may be any polygons, as
 /// the paper claims.
 ///
-/// **Normals.** The estimate divides differences of neighbouring normals by edge
+/// **Normals.** The estimate divides differences of neighboring normals by edge
 /// lengths, so its accuracy is that of the normals divided by h: with exact
 /// normals the estimate converges, with first-order normals (any average of face
 /// normals on an irregular mesh or at a boundary) its error is O(1). Normals come
-/// from `vertex_normal_map` when given (at the vertex and at its neighbours).
+/// from `vertex_normal_map` when given (at the vertex and at its neighbors).
 /// Otherwise they are estimated once per vertex by `vertex_normal_method`, whose
 /// default here is `Vertex_normal_method::quadric_fit` (second order, also at
 /// boundary vertices). Measured on a torus (R = 3, r = 1, 48x24 and 96x48 vertices; the test
@@ -58,7 +58,7 @@ namespace Curvature_estimation {
 /// resolutions: they do not converge. Hence `quadric_fit`. A vertex where the fit is
 /// impossible even over the widest ring (a tiny component, such as the rim of a
 /// lone fan) falls back to the area-weighted normal the fit starts from, so that it
-/// does not deprive its neighbours of an estimate; first order there.
+/// does not deprive its neighbors of an estimate; first order there.
 ///
 /// **Conventions.** Curvatures are positive where the surface bends away from the
 /// normal (a sphere with outward normals has `max_curvature == min_curvature == 1/r`),
@@ -115,7 +115,7 @@ namespace Curvature_estimation {
 ///     \cgalParamDefault{the value of `neighborhood_rings`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{max_neighborhood_rings}
-///     \cgalParamDescription{`quadric_fit` normals only: the widest neighbourhood an ill-conditioned fit is widened to}
+///     \cgalParamDescription{`quadric_fit` normals only: the widest neighborhood an ill-conditioned fit is widened to}
 ///     \cgalParamType{`int`, at least the two values above}
 ///     \cgalParamDefault{`3`}
 ///   \cgalParamNEnd

@@ -163,7 +163,7 @@ void put_hypersurface_estimate(const NamedParameters& np, const Vertex& v, const
 ///     \cgalParamDefault{the value of `neighborhood_rings`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{max_neighborhood_rings}
-///     \cgalParamDescription{the widest neighbourhood an ill-conditioned fit is widened to}
+///     \cgalParamDescription{the widest neighborhood an ill-conditioned fit is widened to}
 ///     \cgalParamType{`int`, at least the two values above}
 ///     \cgalParamDefault{`3`}
 ///   \cgalParamNEnd

@@ -68,7 +68,7 @@ struct Paraboloid_estimator
 /// `max_curvature >= min_curvature`, H is their mean, K their product. The fit is
 /// made in coordinates scaled by the mean 1-ring edge length, so scaling the mesh
 /// by s scales the curvatures by 1/s, to rounding. A vertex that cannot be
-/// estimated (isolated, all neighbours coincident, non-finite coordinates,
+/// estimated (isolated, all neighbors coincident, non-finite coordinates,
 /// ill-conditioned up to the widest ring) gets NaN in every output.
 ///
 /// Only the outputs whose maps are passed are written; passing none does nothing.
@@ -118,7 +118,7 @@ struct Paraboloid_estimator
 ///     \cgalParamDefault{the value of `neighborhood_rings`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{max_neighborhood_rings}
-///     \cgalParamDescription{the widest neighbourhood an ill-conditioned fit is widened to}
+///     \cgalParamDescription{the widest neighborhood an ill-conditioned fit is widened to}
 ///     \cgalParamType{`int`, at least the two values above}
 ///     \cgalParamDefault{`3`}
 ///   \cgalParamNEnd

@@ -127,7 +127,7 @@ struct Vertex_normal_estimator
  *   \cgalParamNEnd
  *
  *   \cgalParamNBegin{max_neighborhood_rings}
- *     \cgalParamDescription{`quadric_fit` only: the widest neighbourhood an ill-conditioned fit is widened to}
+ *     \cgalParamDescription{`quadric_fit` only: the widest neighborhood an ill-conditioned fit is widened to}
  *     \cgalParamType{`int`}
  *     \cgalParamDefault{`3`}
  *   \cgalParamNEnd

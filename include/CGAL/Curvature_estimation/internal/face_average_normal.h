@@ -75,9 +75,9 @@ Face_walk walk_face(typename boost::graph_traits<FaceGraph>::halfedge_descriptor
 ///   infinite weight: the result is then the average of the unit normals of such faces
 ///   alone (the limit of the weighted average as their centroids tend to `v`).
 /// - A face with a non-finite point (or a coordinate difference that overflows)
-///   contributes nothing, so that one bad vertex does not take its neighbours' normals.
+///   contributes nothing, so that one bad vertex does not take its neighbors' normals.
 /// - The coordinates are taken relative to `v` and divided by the largest
-///   coordinate difference between `v` and its neighbours, so the result does not depend
+///   coordinate difference between `v` and its neighbors, so the result does not depend
 ///   on the scale of the mesh (no overflow or underflow for tiny or huge meshes).
 ///
 /// \returns a unit vector; or the zero vector when `v` is isolated, has no incident face,
@@ -124,7 +124,7 @@ Eigen::Vector3d face_average_normal(typename boost::graph_traits<FaceGraph>::ver
   if (!pv.allFinite())
     return nan;
 
-  // Local length scale: the largest coordinate difference between v and a neighbour.
+  // Local length scale: the largest coordinate difference between v and a neighbor.
   double scale = 0.;
   for (halfedge_descriptor h : halfedges_around_target(v, g)) {
     const double d = (point(source(h, g)) - pv).template lpNorm<Eigen::Infinity>();
@@ -133,7 +133,7 @@ Eigen::Vector3d face_average_normal(typename boost::graph_traits<FaceGraph>::ver
     if (d > scale)
       scale = d;
   }
-  if (!(scale > 0.)) // all neighbours coincide with v: every face is degenerate
+  if (!(scale > 0.)) // all neighbors coincide with v: every face is degenerate
     return zero;
 
   // Position of u relative to v, in units of `scale` (division, not multiplication by

@@ -54,7 +54,7 @@ constexpr bool accessible_concurrently()
 // every map they touch is accessible_concurrently (above): property maps such as
 // the dynamic ones of Polyhedron_3 insert on `get` and are not thread-safe. In
 // parallel, vertices go in blocks of fixed size, so the extra memory is
-// O(block + threads x neighbourhood), not O(#vertices).
+// O(block + threads x neighborhood), not O(#vertices).
 template <typename ConcurrencyTag, bool concurrent_maps = false, typename VertexRange, typename Worker, typename Store>
 void for_each_vertex(const VertexRange& vertices, const Worker& worker, Store store)
 {

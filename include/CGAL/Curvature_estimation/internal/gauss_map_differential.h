@@ -181,7 +181,7 @@ public:
     center_ = point_in_double(vpm_, v);
     if (!center_.allFinite())
       return Surface_estimate();
-    scale_ = neighbour_length_scale(v, g, vpm_, center_);
+    scale_ = neighbor_length_scale(v, g, vpm_, center_);
     if (!(scale_ > 0))
       return Surface_estimate();
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// k-ring neighbourhoods of a vertex of a FaceGraph or of a tetrahedral complex,
+// k-ring neighborhoods of a vertex of a FaceGraph or of a tetrahedral complex,
 // grown one ring at a time so that an estimator can widen its stencil without
 // gathering it again.
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_NEIGHBORHOOD_H
@@ -19,7 +19,7 @@ namespace Curvature_estimation {
 namespace internal {
 
 // The buffers are reused from vertex to vertex: no allocation once they have
-// reached the size of the largest neighbourhood met.
+// reached the size of the largest neighborhood met.
 template <typename FaceGraph>
 class Ring_collector
 {
@@ -86,8 +86,8 @@ public:
   std::size_t ring_end(int r) const { return ring_ends_[r]; }
 
 private:
-  // A linear search: neighbourhoods hold tens of vertices, and the 1-ring of a
-  // non-manifold vertex may repeat a neighbour. (A plain loop: std::find is not
+  // A linear search: neighborhoods hold tens of vertices, and the 1-ring of a
+  // non-manifold vertex may repeat a neighbor. (A plain loop: std::find is not
   // inlined and costs more than the search.)
   void add_if_new(vertex_descriptor w)
   {
@@ -107,7 +107,7 @@ private:
   bool faces_are_triangles_ = false;
 };
 
-// k-rings over the neighbours of Tetrahedral_complex_stars, one ring at a time.
+// k-rings over the neighbors of Tetrahedral_complex_stars, one ring at a time.
 // A stamp per vertex (allocated on first use, so that copying an unused
 // collector is cheap) replaces the surface collector's linear search, since
 // tetrahedral rings hold hundreds of vertices.

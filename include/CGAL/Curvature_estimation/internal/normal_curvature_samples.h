@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Normal-curvature samples at a vertex, the common input of Taubin's tensor and
 // of Chen and Schmitt's Euler fit (Chen, Wu and Chi 2005, section 3):
-// for every neighbour q_i joined to the vertex p by an edge, the unit tangent
+// for every neighbor q_i joined to the vertex p by an edge, the unit tangent
 // t_i (the projection of q_i - p on the tangent plane, eq. 9), the normal
 // curvature of the circle through p and q_i tangent to the plane (eq. 10), and
 // the two candidate weights of the edge (areas and centroid weights of the one
@@ -54,9 +54,9 @@ public:
   Normal_curvature_sampler(const FaceGraph& g, VertexPointMap vpm) : g_(&g), vpm_(vpm) {}
 
   // Fills `samples` at `v` for the unit `normal` and its tangent frame; returns the
-  // length scale of the coordinates (the mean distance from v to its neighbours),
-  // or 0 when v is isolated or its point or all its neighbours are unusable.
-  // Curvatures are positive where the neighbour lies below the tangent plane
+  // length scale of the coordinates (the mean distance from v to its neighbors),
+  // or 0 when v is isolated or its point or all its neighbors are unusable.
+  // Curvatures are positive where the neighbor lies below the tangent plane
   // (the package's convention: 1/r on a sphere with outward normals).
   double sample(vertex_descriptor v, const Eigen::Vector3d& normal, const Tangent_frame& tangents,
                 std::vector<Normal_curvature_sample>& samples)
@@ -66,7 +66,7 @@ public:
     center_ = point(v);
     if (!center_.allFinite())
       return 0;
-    scale_ = neighbour_length_scale(v, g, vpm_, center_);
+    scale_ = neighbor_length_scale(v, g, vpm_, center_);
     if (!(scale_ > 0))
       return 0;
     for (halfedge_descriptor h : halfedges_around_target(v, g)) {

@@ -156,7 +156,7 @@ public:
   using Vector = Eigen::Matrix<double, N, 1>;
   using Tangents = Eigen::Matrix<double, N, D>;
 
-  // `a` and `b` construct the neighbourhood: the mesh and its point map.
+  // `a` and `b` construct the neighborhood: the mesh and its point map.
   template <typename A, typename B>
   Platelet_fit_core(const A& a, const B& b, const Platelet_fit_settings& settings)
     : neighborhood_(a, b), settings_(settings)
@@ -294,7 +294,7 @@ private:
     return widest != 0 && fit.solve_whitened(max_condition, samples) ? widest : 0;
   }
 
-  // The neighbourhood's first-order normal, or for quadric_fit a normal of second
+  // The neighborhood's first-order normal, or for quadric_fit a normal of second
   // order or better: that normal corrected by the gradient of a Taylor fit in its
   // frame (see fit_normal). `gathered`: whether gather(v) has succeeded.
   bool estimate_normal(Vertex v, Vertex_normal_method method, bool gathered, Vector& normal)
@@ -412,7 +412,7 @@ private:
   int curvature_rings_ = 0;
 };
 
-// The neighbourhood policy of a FaceGraph: k-rings by halfedge circulation, the
+// The neighborhood policy of a FaceGraph: k-rings by halfedge circulation, the
 // area-weighted normal (or another face average) as the first-order normal.
 template <typename FaceGraph, typename VertexPointMap>
 class Face_graph_platelet
@@ -433,7 +433,7 @@ public:
   std::size_t ring_end(int r) const { return rings_.ring_end(r); }
   bool center_on_border(Vertex) const { return rings_.center_on_border(); }
 
-  // Face averages need no neighbourhood.
+  // Face averages need no neighborhood.
   static bool platelet_for_normal(Vertex_normal_method method) { return method == Vertex_normal_method::quadric_fit; }
 
   // The area-weighted normal from the gathered 1-ring for quadric_fit, and for

@@ -57,11 +57,11 @@ inline Surface_estimate shape_estimate_from_matrix(const Eigen::Matrix2d& shape,
 }
 
 // The local length scale at `v`: the mean distance from `center` (the point of v)
-// to the neighbours joined to v by an edge, ignoring coincident and non-finite
+// to the neighbors joined to v by an edge, ignoring coincident and non-finite
 // ones; 0 when there is none. Coordinates divided by it make the estimators
 // scale invariant.
 template <typename FaceGraph, typename VertexPointMap>
-double neighbour_length_scale(typename boost::graph_traits<FaceGraph>::vertex_descriptor v, const FaceGraph& g,
+double neighbor_length_scale(typename boost::graph_traits<FaceGraph>::vertex_descriptor v, const FaceGraph& g,
                               const VertexPointMap& vpm, const Eigen::Vector3d& center)
 {
   if (halfedge(v, g) == boost::graph_traits<FaceGraph>::null_halfedge())

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The neighbourhood policy that runs the platelet fit of platelet_fit.h (Hamann's
+// The neighborhood policy that runs the platelet fit of platelet_fit.h (Hamann's
 // thesis §4.3) at the vertices of a tetrahedral complex whose vertices are points
 // of R^4: k-rings over the CSR stars, and the 3-volume-weighted mean of the cells'
 // normals as the first-order normal.
