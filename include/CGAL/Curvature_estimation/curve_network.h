@@ -56,7 +56,7 @@ enum class Curve_model : unsigned char
 
 namespace internal {
 
-// Neighbours whose tangent-plane directions make an angle of at least 150 degrees
+// Neighbors whose tangent-plane directions make an angle of at least 150 degrees
 // may form a curve through the vertex. Curves with a sharper kink (allowed with
 // 120 degrees, say) mix the normal curvatures of two directions and, on jittered
 // grids and Delaunay meshes, raise the RMS error of K by two orders of magnitude.
@@ -90,7 +90,7 @@ public:
     if (!center_.allFinite() || !gather_one_ring(v))
       return Surface_estimate();
 
-    // Orientation of the tangent plane in which neighbours are paired, and of
+    // Orientation of the tangent plane in which neighbors are paired, and of
     // the normal computed from the tangents: the given normal, else the faces'.
     Eigen::Vector3d orientation = given;
     if (given_normal == nullptr) {
@@ -101,7 +101,7 @@ public:
       orientation /= length;
     }
 
-    pair_neighbours(orientation);
+    pair_neighbors(orientation);
     if (pairs_.size() < 3)
       return fall_back(v, given_normal, given);
 
@@ -150,7 +150,7 @@ private:
     return result;
   }
 
-  // The distinct neighbours of `v` with finite points, in the order of the
+  // The distinct neighbors of `v` with finite points, in the order of the
   // halfedges around `v`, and the length scale (their mean distance).
   bool gather_one_ring(vertex_descriptor v)
   {
@@ -178,10 +178,10 @@ private:
     return true;
   }
 
-  // Greedy pairing: of all pairs of neighbours whose directions in the tangent
+  // Greedy pairing: of all pairs of neighbors whose directions in the tangent
   // plane are at least 150 degrees apart, the most nearly opposite first, each
-  // neighbour in one pair at most.
-  void pair_neighbours(const Eigen::Vector3d& normal)
+  // neighbor in one pair at most.
+  void pair_neighbors(const Eigen::Vector3d& normal)
   {
     directions_.clear();
     for (const Eigen::Vector3d& offset : offsets_) {
@@ -210,8 +210,8 @@ private:
       }
   }
 
-  // The neighbour of `at` straight across from `from`: the third of its six
-  // neighbours counted around it from `from`, if `at` is an interior vertex of
+  // The neighbor of `at` straight across from `from`: the third of its six
+  // neighbors counted around it from `from`, if `at` is an interior vertex of
   // valence 6 (of a grid triangulation, the next vertex on the grid line).
   bool continue_straight(vertex_descriptor from, vertex_descriptor at, vertex_descriptor& next) const
   {
@@ -299,7 +299,7 @@ private:
 /// curves and by least squares for more, gives the principal curvatures and
 /// directions.
 ///
-/// **Curves.** The 1-ring neighbours are projected to the tangent plane of the
+/// **Curves.** The 1-ring neighbors are projected to the tangent plane of the
 /// area-weighted normal (or of the given normal) and paired greedily, the most
 /// nearly opposite pair first, among the pairs at least 150 degrees apart; each
 /// pair and the vertex make one curve. On a grid triangulation (valence 6) these
@@ -308,7 +308,7 @@ private:
 ///
 /// **Order O(h^2n).** With `extrapolation_order(n)`, n = 1..4, each curve takes the
 /// points at ±h, ..., ±nh along its mesh line, continued straight through interior
-/// vertices of valence 6 (the vertex three neighbours round from the one the line
+/// vertices of valence 6 (the vertex three neighbors round from the one the line
 /// came from), and combines them with the paper's even/odd coefficients
 /// (`internal::extrapolation_coefficients()`), which cancel the Taylor terms up to
 /// order 2n of the first and second derivatives: the curvature and tangent are
@@ -332,14 +332,14 @@ private:
 /// order (only possible for n > 1, within n - 1 rings of the boundary or of a vertex
 /// of valence other than 6). `Estimation_status::fallback`: the curve network does
 /// not exist at the vertex:
-/// fewer than three pairs of opposite neighbours (boundary vertices; interior
+/// fewer than three pairs of opposite neighbors (boundary vertices; interior
 /// vertices of valence 5 or less; on irregular meshes, every vertex without three
-/// pairs of neighbours at least 150 degrees apart), no normal
+/// pairs of neighbors at least 150 degrees apart), no normal
 /// from the tangents, or directions too close for Euler's system (condition number
 /// above 20); the estimate is then Hamann's paraboloid fit
 /// (`paraboloid_fitting_curvatures()` with its defaults and the given normal if
-/// any), which widens its neighbourhood as it needs. `Estimation_status::not_estimable`:
-/// isolated vertex, non-finite point, all neighbours coincident, or the fallback
+/// any), which widens its neighborhood as it needs. `Estimation_status::not_estimable`:
+/// isolated vertex, non-finite point, all neighbors coincident, or the fallback
 /// failed too; every output is NaN.
 ///
 /// **Conventions.** A sphere with outward normals has `max_curvature == min_curvature
@@ -356,7 +356,7 @@ private:
 ///         threads; the property maps of `Surface_mesh` (and `Point_set_3`) are read and
 ///         written by the worker threads, every other map by the calling thread only.
 /// \tparam FaceGraph a model of `FaceGraph` (the curves need triangles; other
-///         faces are accepted and only change which vertices neighbour each other).
+///         faces are accepted and only change which vertices neighbor each other).
 /// \tparam NamedParameters a sequence of named parameters, built with the functions of `CGAL::Curvature_estimation::parameters`
 ///
 /// \param g the mesh
@@ -426,12 +426,9 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag,
 void curve_network_curvatures(const FaceGraph& g,
                               const NamedParameters& np = parameters::default_values())
 {
-  using ::CGAL::parameters::choose_parameter;
-  using ::CGAL::parameters::get_parameter;
-
   internal::reject_ball_radius<NamedParameters>("curve_network_curvatures");
-  const Curve_model model = choose_parameter(get_parameter(np, internal_np::curve_model), Curve_model::bezier);
-  const int order = choose_parameter(get_parameter(np, internal_np::extrapolation_order), 1);
+  const Curve_model model = internal::parameter_or(np, internal_np::curve_model, Curve_model::bezier);
+  const int order = internal::parameter_or(np, internal_np::extrapolation_order, 1);
   if (order < 1 || order > internal::max_extrapolation_order)
     throw std::invalid_argument("curve_network_curvatures: extrapolation_order must be in 1.." +
                                 std::to_string(internal::max_extrapolation_order));

@@ -158,7 +158,6 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename NamedParameters = parameters::Default_named_parameters>
 void gauss_map_curvatures(const FaceGraph& g, const NamedParameters& np = parameters::default_values())
 {
-  using ::CGAL::parameters::choose_parameter;
   using ::CGAL::parameters::get_parameter;
   using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
   constexpr bool given_normals = internal::has_parameter<NamedParameters, ::CGAL::internal_np::vertex_normal_map_t>();
@@ -167,7 +166,7 @@ void gauss_map_curvatures(const FaceGraph& g, const NamedParameters& np = parame
   internal::reject_ball_radius<NamedParameters>("gauss_map_curvatures");
   const internal::Platelet_fit_settings settings = internal::platelet_fit_settings(np, "gauss_map_curvatures");
   const Vertex_normal_method normal_method =
-    choose_parameter(get_parameter(np, internal_np::vertex_normal_method), Vertex_normal_method::quadric_fit);
+    internal::parameter_or(np, internal_np::vertex_normal_method, Vertex_normal_method::quadric_fit);
   internal::estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
     using VPM = std::decay_t<decltype(vpm)>;
     // First every vertex's unit normal, since each is used by all its neighbors.

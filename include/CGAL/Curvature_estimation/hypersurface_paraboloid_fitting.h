@@ -208,7 +208,6 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag,
 void hypersurface_paraboloid_fitting_curvatures(const TetrahedralComplex& complex,
                                                 const NamedParameters& np = parameters::default_values())
 {
-  using ::CGAL::parameters::choose_parameter;
   using ::CGAL::parameters::get_parameter;
   using Traits = Tetrahedral_complex_traits<TetrahedralComplex>;
   using Stars = Tetrahedral_complex_stars<TetrahedralComplex>;
@@ -218,7 +217,7 @@ void hypersurface_paraboloid_fitting_curvatures(const TetrahedralComplex& comple
   const internal::Platelet_fit_settings settings =
     internal::platelet_fit_settings(np, "hypersurface_paraboloid_fitting_curvatures");
   const Vertex_normal_method normal_method =
-    choose_parameter(get_parameter(np, internal_np::vertex_normal_method), Vertex_normal_method::quadric_fit);
+    internal::parameter_or(np, internal_np::vertex_normal_method, Vertex_normal_method::quadric_fit);
   if (normal_method != Vertex_normal_method::quadric_fit && normal_method != Vertex_normal_method::area_weighted)
     throw std::invalid_argument("hypersurface_paraboloid_fitting_curvatures: vertex_normal_method must be "
                                 "quadric_fit or area_weighted");
@@ -226,8 +225,7 @@ void hypersurface_paraboloid_fitting_curvatures(const TetrahedralComplex& comple
     return;
   else {
     constexpr bool given_normals = internal::has_parameter<NamedParameters, ::CGAL::internal_np::vertex_normal_map_t>();
-    const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                      Traits::default_point_map(complex));
+    const auto vpm = internal::parameter_or(np, CGAL::internal_np::vertex_point, Traits::default_point_map(complex));
     const auto normals = get_parameter(np, CGAL::internal_np::vertex_normal_map);
 
     const Stars stars(complex);

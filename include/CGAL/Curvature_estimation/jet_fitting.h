@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // CGAL's jet fitting (Monge_via_jet_fitting, Cazals and Pouget) behind this
-// package's interface, neighbourhoods and conventions, for like-for-like comparisons.
+// package's interface, neighborhoods and conventions, for like-for-like comparisons.
 #ifndef CGAL_CURVATURE_ESTIMATION_JET_FITTING_H
 #define CGAL_CURVATURE_ESTIMATION_JET_FITTING_H
 
@@ -160,7 +160,7 @@ private:
 ///     \cgalParamDefault{`1`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{max_neighborhood_rings}
-///     \cgalParamDescription{the widest neighbourhood a fit is widened to}
+///     \cgalParamDescription{the widest neighborhood a fit is widened to}
 ///     \cgalParamType{`int`, at least `neighborhood_rings`}
 ///     \cgalParamDefault{`neighborhood_rings + 3`}
 ///   \cgalParamNEnd
@@ -198,14 +198,11 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename NamedParameters = parameters::Default_named_parameters>
 void jet_fitting_curvatures(const FaceGraph& g, const NamedParameters& np = parameters::default_values())
 {
-  using ::CGAL::parameters::choose_parameter;
-  using ::CGAL::parameters::get_parameter;
-
-  const int jet_degree = choose_parameter(get_parameter(np, internal_np::jet_degree), 2);
-  const int monge_degree = choose_parameter(get_parameter(np, internal_np::monge_degree), 2);
-  const int rings = choose_parameter(get_parameter(np, internal_np::neighborhood_rings), 1);
-  const int max_rings = choose_parameter(get_parameter(np, internal_np::max_neighborhood_rings), rings + 3);
-  const double max_condition = choose_parameter(get_parameter(np, internal_np::max_condition_number), 1e3);
+  const int jet_degree = internal::parameter_or(np, internal_np::jet_degree, 2);
+  const int monge_degree = internal::parameter_or(np, internal_np::monge_degree, 2);
+  const int rings = internal::parameter_or(np, internal_np::neighborhood_rings, 1);
+  const int max_rings = internal::parameter_or(np, internal_np::max_neighborhood_rings, rings + 3);
+  const double max_condition = internal::parameter_or(np, internal_np::max_condition_number, 1e3);
   internal::reject_ball_radius<NamedParameters>("jet_fitting_curvatures");
   const std::string where = "jet_fitting_curvatures: ";
   if (jet_degree < 1 || jet_degree > 4 || monge_degree < 2 || monge_degree > jet_degree)

@@ -172,14 +172,12 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag,
 void paraboloid_fitting_curvatures(const FaceGraph& g,
                                    const NamedParameters& np = parameters::default_values())
 {
-  using ::CGAL::parameters::choose_parameter;
-  using ::CGAL::parameters::get_parameter;
 
   internal::reject_ball_radius<NamedParameters>("paraboloid_fitting_curvatures");
   const internal::Platelet_fit_settings settings =
     internal::platelet_fit_settings(np, "paraboloid_fitting_curvatures");
   const Vertex_normal_method normal_method =
-    choose_parameter(get_parameter(np, internal_np::vertex_normal_method), Vertex_normal_method::quadric_fit);
+    internal::parameter_or(np, internal_np::vertex_normal_method, Vertex_normal_method::quadric_fit);
   internal::estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
     return internal::Paraboloid_estimator<FaceGraph, std::decay_t<decltype(vpm)>>{
       internal::Platelet_fitter<FaceGraph, std::decay_t<decltype(vpm)>>(g, vpm, settings), normal_method};

@@ -142,6 +142,14 @@ constexpr bool has_parameter()
   return !::CGAL::parameters::is_default_parameter<NamedParameters, Tag>::value;
 }
 
+// The value of the parameter of `np` with tag `tag`, or `default_value` where `np`
+// has none (CGAL's choose_parameter(get_parameter(np, tag), default_value)).
+template <typename NamedParameters, typename Tag, typename T>
+auto parameter_or(const NamedParameters& np, Tag tag, const T& default_value)
+{
+  return ::CGAL::parameters::choose_parameter(::CGAL::parameters::get_parameter(np, tag), default_value);
+}
+
 // Radius neighborhoods (CGAL 6's `ball_radius`) are not implemented by this
 // package's estimators: a pack that sets it is refused rather than ignored, so
 // that a chain written for CGAL's interpolated corrected curvatures does not

@@ -16,7 +16,7 @@ namespace CGAL {
 namespace Curvature_estimation {
 
 /// \ingroup PkgCurvatureEstimationRef
-/// The weights of the neighbours in `taubin_curvatures()`. Each neighbour q
+/// The weights of the neighbors in `taubin_curvatures()`. Each neighbor q
 /// joined to the vertex p by an edge is weighted by the faces on the edge (p, q)
 /// (two, or one at the boundary); the weights are normalised to sum 1.
 enum class Neighbor_weighting : unsigned char
@@ -32,7 +32,7 @@ enum class Neighbor_weighting : unsigned char
 ///
 /// Estimates principal curvatures and directions, mean and Gaussian curvature at
 /// every vertex of a surface mesh by Taubin's tensor of curvature (Taubin 1995,
-/// as reviewed by Chen, Wu and Chi 2005, section 3.2). For every neighbour
+/// as reviewed by Chen, Wu and Chi 2005, section 3.2). For every neighbor
 /// `q_i` joined to the vertex p by an edge, `t_i` is the unit
 /// projection of `q_i - p` on the tangent plane and
 /// `k_i = 2 <p - q_i, N> / |q_i - p|^2` the curvature of the
@@ -52,7 +52,7 @@ enum class Neighbor_weighting : unsigned char
 /// **Conventions.** A sphere with outward normals has `max_curvature == min_curvature == 1/r`;
 /// `max_curvature >= min_curvature`; directions are unit, tangent and orthogonal;
 /// K is `max_curvature * min_curvature`. A vertex with no normal, or whose
-/// neighbours' tangents do not span the tangent plane, gets NaN in every output
+/// neighbors' tangents do not span the tangent plane, gets NaN in every output
 /// and the status `Estimation_status::not_estimable`.
 ///
 /// Only the outputs whose maps are passed are written; passing none does nothing.
@@ -102,7 +102,7 @@ enum class Neighbor_weighting : unsigned char
 ///     \cgalParamDefault{the value of `neighborhood_rings`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{max_neighborhood_rings}
-///     \cgalParamDescription{`quadric_fit` normals only: the widest neighbourhood an ill-conditioned fit is widened to}
+///     \cgalParamDescription{`quadric_fit` normals only: the widest neighborhood an ill-conditioned fit is widened to}
 ///     \cgalParamType{`int`, at least the two values above}
 ///     \cgalParamDefault{`3`}
 ///   \cgalParamNEnd
@@ -113,7 +113,7 @@ enum class Neighbor_weighting : unsigned char
 ///     \cgalParamDefault{`1e3`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{neighbor_weighting}
-///     \cgalParamDescription{the weights of the neighbours}
+///     \cgalParamDescription{the weights of the neighbors}
 ///     \cgalParamType{`CGAL::Curvature_estimation::Neighbor_weighting`}
 ///     \cgalParamDefault{`Neighbor_weighting::area` (Taubin's)}
 ///   \cgalParamNEnd
@@ -150,11 +150,8 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename NamedParameters = parameters::Default_named_parameters>
 void taubin_curvatures(const FaceGraph& g, const NamedParameters& np = parameters::default_values())
 {
-  using ::CGAL::parameters::choose_parameter;
-  using ::CGAL::parameters::get_parameter;
   const bool area_weights =
-    choose_parameter(get_parameter(np, internal_np::neighbor_weighting), Neighbor_weighting::area) ==
-    Neighbor_weighting::area;
+    internal::parameter_or(np, internal_np::neighbor_weighting, Neighbor_weighting::area) == Neighbor_weighting::area;
   internal::normal_curvature_sample_curvatures<ConcurrencyTag>(
     g, np, "taubin_curvatures",
     [area_weights](const std::vector<internal::Normal_curvature_sample>& samples, Eigen::Matrix2d& shape) {

@@ -172,10 +172,9 @@ void estimate_vertex_normals(const FaceGraph& g,
   using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
 
   const GT traits = choose_parameter<GT>(get_parameter(np, ::CGAL::internal_np::geom_traits));
-  const VPM vpm = choose_parameter(get_parameter(np, ::CGAL::internal_np::vertex_point),
-                                   get_const_property_map(CGAL::vertex_point, g));
+  const VPM vpm = internal::parameter_or(np, ::CGAL::internal_np::vertex_point, get_const_property_map(CGAL::vertex_point, g));
   const Vertex_normal_method method =
-    choose_parameter(get_parameter(np, internal_np::vertex_normal_method), Vertex_normal_method::quadric_fit);
+    internal::parameter_or(np, internal_np::vertex_normal_method, Vertex_normal_method::quadric_fit);
   internal::reject_ball_radius<NamedParameters>("estimate_vertex_normals");
   const internal::Platelet_fit_settings settings = internal::platelet_fit_settings(np, "estimate_vertex_normals");
 

@@ -86,7 +86,6 @@ template <typename ConcurrencyTag, typename FaceGraph, typename NamedParameters,
 void estimate_surface_curvatures(const FaceGraph& g, const NamedParameters& np, MakeEstimator make_estimator)
 {
   if constexpr (wants_curvature_output<NamedParameters>()) {
-    using ::CGAL::parameters::choose_parameter;
     using ::CGAL::parameters::get_parameter;
     using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
     using GT = typename CGAL::GetGeomTraits<FaceGraph, NamedParameters>::type;
@@ -97,8 +96,7 @@ void estimate_surface_curvatures(const FaceGraph& g, const NamedParameters& np, 
       surface_outputs_accessible_concurrently<NamedParameters>() &&
       (!with_normals || given_map_accessible_concurrently<NamedParameters>(::CGAL::internal_np::vertex_normal_map));
 
-    const VPM vpm = choose_parameter(get_parameter(np, ::CGAL::internal_np::vertex_point),
-                                     get_const_property_map(CGAL::vertex_point, g));
+    const VPM vpm = parameter_or(np, ::CGAL::internal_np::vertex_point, get_const_property_map(CGAL::vertex_point, g));
     const auto normals = get_parameter(np, ::CGAL::internal_np::vertex_normal_map);
     estimate_at_vertices<ConcurrencyTag, concurrent_maps, with_normals>(
       vertices(g), make_estimator(vpm),

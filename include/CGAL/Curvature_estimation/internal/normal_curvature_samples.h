@@ -182,13 +182,11 @@ template <typename ConcurrencyTag, typename FaceGraph, typename NamedParameters,
 void normal_curvature_sample_curvatures(const FaceGraph& g, const NamedParameters& np, const char* caller,
                                         Solve solve)
 {
-  using ::CGAL::parameters::choose_parameter;
-  using ::CGAL::parameters::get_parameter;
 
   reject_ball_radius<NamedParameters>(caller);
   const Platelet_fit_settings settings = platelet_fit_settings(np, caller);
   const Vertex_normal_method method =
-    choose_parameter(get_parameter(np, internal_np::vertex_normal_method), Vertex_normal_method::quadric_fit);
+    parameter_or(np, internal_np::vertex_normal_method, Vertex_normal_method::quadric_fit);
   estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
     using VPM = std::decay_t<decltype(vpm)>;
     return Normal_curvature_sample_estimator<FaceGraph, VPM, Solve>{Platelet_fitter<FaceGraph, VPM>(g, vpm, settings),

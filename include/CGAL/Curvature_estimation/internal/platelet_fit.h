@@ -65,13 +65,11 @@ struct Platelet_fit_settings
 template <typename NamedParameters>
 Platelet_fit_settings platelet_fit_settings(const NamedParameters& np, const char* caller)
 {
-  using ::CGAL::parameters::choose_parameter;
-  using ::CGAL::parameters::get_parameter;
   Platelet_fit_settings settings;
-  settings.rings = choose_parameter(get_parameter(np, internal_np::neighborhood_rings), 1);
-  settings.boundary_rings = choose_parameter(get_parameter(np, internal_np::boundary_neighborhood_rings), settings.rings);
-  settings.max_rings = choose_parameter(get_parameter(np, internal_np::max_neighborhood_rings), 3);
-  settings.max_condition = choose_parameter(get_parameter(np, internal_np::max_condition_number), 1e3);
+  settings.rings = parameter_or(np, internal_np::neighborhood_rings, 1);
+  settings.boundary_rings = parameter_or(np, internal_np::boundary_neighborhood_rings, settings.rings);
+  settings.max_rings = parameter_or(np, internal_np::max_neighborhood_rings, 3);
+  settings.max_condition = parameter_or(np, internal_np::max_condition_number, 1e3);
   const std::string where = std::string(caller) + ": ";
   if (settings.rings < 1 || settings.boundary_rings < 1)
     throw std::invalid_argument(where + "neighborhood_rings and boundary_neighborhood_rings must be at least 1");
