@@ -11,9 +11,9 @@
 //
 // A local estimator is copyable: one copy per thread holds that thread's buffers.
 // A public estimator reads and checks its own parameters, then calls
-// estimate_surface_curvatures (FaceGraph) or estimate_hypersurface_curvatures
-// (hypersurface_paraboloid_fitting.h) with a function that makes its local
-// estimator from the vertex point map.
+// estimate_surface_curvatures (FaceGraph) with a function that makes its local
+// estimator from the vertex point map; the hypersurface estimator
+// (hypersurface_paraboloid_fitting.h) calls estimate_at_vertices over its stars.
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_ESTIMATE_AT_VERTICES_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_ESTIMATE_AT_VERTICES_H
 
