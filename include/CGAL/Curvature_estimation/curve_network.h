@@ -350,11 +350,7 @@ private:
 ///
 /// Only the outputs whose maps are passed are written; passing none does nothing.
 ///
-/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (default), `CGAL::Parallel_tag` or
-///         `CGAL::Parallel_if_available_tag`. Sequential and parallel runs give
-///         identical results. In parallel the vertex point map is read from several
-///         threads; the property maps of `Surface_mesh` (and `Point_set_3`) are read and
-///         written by the worker threads, every other map by the calling thread only.
+/// \ceConcurrencyTag
 /// \tparam FaceGraph a model of `FaceGraph` (the curves need triangles; other
 ///         faces are accepted and only change which vertices neighbor each other).
 /// \tparam NamedParameters a sequence of named parameters, built with the functions of `CGAL::Curvature_estimation::parameters`
@@ -363,17 +359,7 @@ private:
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{vertex_point_map}
-///     \cgalParamDescription{a property map associating points to the vertices of `g`}
-///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
-///                    as key type and `%Point_3` as value type}
-///     \cgalParamDefault{`boost::get(CGAL::vertex_point, g)`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{geom_traits}
-///     \cgalParamDescription{an instance of a geometric traits class}
-///     \cgalParamType{a class model of `Kernel`}
-///     \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
-///   \cgalParamNEnd
+///   \ceSurfaceInputParameters
 ///   \cgalParamNBegin{vertex_normal_map}
 ///     \cgalParamDescription{normals at the vertices, trusted as given (they need not be unit)}
 ///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
@@ -391,30 +377,7 @@ private:
 ///     \cgalParamType{`int`, from 1 to 4}
 ///     \cgalParamDefault{`1`}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{vertex_principal_curvatures_and_directions_map}
-///     \cgalParamDescription{output: principal curvatures and directions}
-///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
-///                    as key type and `Principal_curvatures_and_directions<GT>` as value type}
-///     \cgalParamDefault{not computed}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{vertex_mean_curvature_map}
-///     \cgalParamDescription{output: mean curvature H = (k1 + k2) / 2}
-///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
-///                    as key type and `GT::FT` as value type}
-///     \cgalParamDefault{not computed}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{vertex_Gaussian_curvature_map}
-///     \cgalParamDescription{output: Gaussian curvature K = k1 k2}
-///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
-///                    as key type and `GT::FT` as value type}
-///     \cgalParamDefault{not computed}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{vertex_estimation_status_map}
-///     \cgalParamDescription{output: the outcome at each vertex (see "Status and fallback" above)}
-///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
-///                    as key type and `CGAL::Curvature_estimation::Estimation_status` as value type}
-///     \cgalParamDefault{not computed}
-///   \cgalParamNEnd
+///   \ceSurfaceOutputParameters{K = k1 k2, see "Status and fallback" above}
 /// \cgalNamedParamsEnd
 ///
 /// \throws std::invalid_argument if `extrapolation_order` is not in 1..4, or is

@@ -57,11 +57,7 @@ enum class Neighbor_weighting : unsigned char
 ///
 /// Only the outputs whose maps are passed are written; passing none does nothing.
 ///
-/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (default), `CGAL::Parallel_tag` or
-///         `CGAL::Parallel_if_available_tag`. Sequential and parallel runs give
-///         identical results. In parallel the vertex point map is read from several
-///         threads; the property maps of `Surface_mesh` (and `Point_set_3`) are read and
-///         written by the worker threads, every other map by the calling thread only.
+/// \ceConcurrencyTag
 /// \tparam FaceGraph a model of `FaceGraph` (faces may be any polygons).
 /// \tparam NamedParameters a sequence of named parameters, built with the functions of `CGAL::Curvature_estimation::parameters`
 ///
@@ -69,78 +65,15 @@ enum class Neighbor_weighting : unsigned char
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{vertex_point_map}
-///     \cgalParamDescription{a property map associating points to the vertices of `g`}
-///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
-///                    as key type and `%Point_3` as value type}
-///     \cgalParamDefault{`boost::get(CGAL::vertex_point, g)`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{geom_traits}
-///     \cgalParamDescription{an instance of a geometric traits class}
-///     \cgalParamType{a class model of `Kernel`}
-///     \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{vertex_normal_map}
-///     \cgalParamDescription{normals at the vertices, trusted as given (they need not be unit)}
-///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
-///                    as key type and `GT::Vector_3` as value type}
-///     \cgalParamDefault{normals estimated by `vertex_normal_method`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{vertex_normal_method}
-///     \cgalParamDescription{how normals are estimated when no `vertex_normal_map` is given (see `estimate_vertex_normals()`)}
-///     \cgalParamType{`CGAL::Curvature_estimation::Vertex_normal_method`}
-///     \cgalParamDefault{`Vertex_normal_method::quadric_fit`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{neighborhood_rings}
-///     \cgalParamDescription{`quadric_fit` normals only: rings an interior vertex's fit starts with}
-///     \cgalParamType{`int`, at least 1}
-///     \cgalParamDefault{`1`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{boundary_neighborhood_rings}
-///     \cgalParamDescription{`quadric_fit` normals only: rings a boundary vertex's fit starts with}
-///     \cgalParamType{`int`, at least 1}
-///     \cgalParamDefault{the value of `neighborhood_rings`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{max_neighborhood_rings}
-///     \cgalParamDescription{`quadric_fit` normals only: the widest neighborhood an ill-conditioned fit is widened to}
-///     \cgalParamType{`int`, at least the two values above}
-///     \cgalParamDefault{`3`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{max_condition_number}
-///     \cgalParamDescription{`quadric_fit` normals only: fits whose normal equations have a larger condition
-///                           number are widened (see `paraboloid_fitting_curvatures()`)}
-///     \cgalParamType{`double`, greater than 1}
-///     \cgalParamDefault{`1e3`}
-///   \cgalParamNEnd
+///   \ceSurfaceInputParameters
+///   \ceGivenNormalParameter
+///   \ceQuadricFitNormalParameters
 ///   \cgalParamNBegin{neighbor_weighting}
 ///     \cgalParamDescription{the weights of the neighbors}
 ///     \cgalParamType{`CGAL::Curvature_estimation::Neighbor_weighting`}
 ///     \cgalParamDefault{`Neighbor_weighting::area` (Taubin's)}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{vertex_principal_curvatures_and_directions_map}
-///     \cgalParamDescription{output: principal curvatures and directions}
-///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
-///                    as key type and `Principal_curvatures_and_directions<GT>` as value type}
-///     \cgalParamDefault{not computed}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{vertex_mean_curvature_map}
-///     \cgalParamDescription{output: mean curvature H = (k1 + k2) / 2}
-///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
-///                    as key type and `GT::FT` as value type}
-///     \cgalParamDefault{not computed}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{vertex_Gaussian_curvature_map}
-///     \cgalParamDescription{output: Gaussian curvature K = k1 k2}
-///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
-///                    as key type and `GT::FT` as value type}
-///     \cgalParamDefault{not computed}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{vertex_estimation_status_map}
-///     \cgalParamDescription{output: the outcome at each vertex (`ok` or `not_estimable`)}
-///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<FaceGraph>::%vertex_descriptor`
-///                    as key type and `CGAL::Curvature_estimation::Estimation_status` as value type}
-///     \cgalParamDefault{not computed}
-///   \cgalParamNEnd
+///   \ceSurfaceOutputParameters{K = k1 k2, `ok` or `not_estimable`}
 /// \cgalNamedParamsEnd
 ///
 /// \throws std::invalid_argument if a parameter is out of its range, or if `ball_radius`
