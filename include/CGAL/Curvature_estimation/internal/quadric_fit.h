@@ -140,14 +140,9 @@ public:
     if (size_ < unknowns)
       return false;
     double inverse[packed];
-    if (!invert<unknowns>(normal_matrix_, inverse))
+    if (!conditioned_inverse<unknowns>(max_condition, inverse, condition_))
       return false;
-    condition_ = one_norm<unknowns>(normal_matrix_) * one_norm<unknowns>(inverse);
-    if (!(condition_ <= max_condition))
-      return false;
-    double coefficients[unknowns];
-    multiply(inverse, right_hand_side_, coefficients);
-    set_coefficients(coefficients);
+    solve_with(inverse);
     return true;
   }
 
@@ -180,10 +175,7 @@ public:
     samples([&](const Point& x, double height, double weight) { accumulate<tested>(W * x, height, weight); });
 
     double whitened_inverse[tested_packed];
-    if (!invert<tested>(normal_matrix_, whitened_inverse))
-      return false;
-    whitened_condition_ = one_norm<tested>(normal_matrix_) * one_norm<tested>(whitened_inverse);
-    if (!(whitened_condition_ <= max_condition))
+    if (!conditioned_inverse<tested>(max_condition, whitened_inverse, whitened_condition_))
       return false;
     // The fit's own block is a prefix of N_y; its inverse where it is not all of N_y.
     double inverse[packed];
@@ -191,9 +183,7 @@ public:
       std::copy(whitened_inverse, whitened_inverse + packed, inverse);
     else if (!invert<unknowns>(normal_matrix_, inverse))
       return false;
-    double coefficients[unknowns];
-    multiply(inverse, right_hand_side_, coefficients);
-    set_coefficients(coefficients);
+    solve_with(inverse);
     // h(x) = g_y . (W x) + 1/2 (W x)^T C_y (W x)
     hessian_ = W.transpose() * hessian_ * W;
     gradient_ = W.transpose() * gradient_;
@@ -222,17 +212,32 @@ private:
     return i == k ? 1.0 : (i == j || j == k) ? 1.7320508075688772935 : 2.4494897427831780982;
   }
 
-  // inverse * rhs, the solution of the normal equations (own block).
-  static void multiply(const double (&inverse)[packed], const double (&rhs)[unknowns], double (&solution)[unknowns])
+  // The inverse of the leading n x n block of the normal matrix and its 1-norm
+  // condition number; false where the block is not positive definite (the
+  // condition is left as it was) or the condition exceeds `max_condition`.
+  template <int n, std::size_t size>
+  bool conditioned_inverse(double max_condition, double (&inverse)[size], double& condition) const
   {
+    if (!invert<n>(normal_matrix_, inverse))
+      return false;
+    condition = one_norm<n>(normal_matrix_) * one_norm<n>(inverse);
+    return condition <= max_condition;
+  }
+
+  // The fit from the inverse of the fit's own block: inverse * rhs, the
+  // coefficients of the monomials.
+  void solve_with(const double (&inverse)[packed])
+  {
+    double coefficients[unknowns];
     CGAL_CURVATURE_ESTIMATION_UNROLL
     for (int i = 0; i < unknowns; ++i) {
       double value = 0;
       CGAL_CURVATURE_ESTIMATION_UNROLL
       for (int j = 0; j < unknowns; ++j)
-        value += inverse[index(i, j)] * rhs[j];
-      solution[i] = value;
+        value += inverse[index(i, j)] * right_hand_side_[j];
+      coefficients[i] = value;
     }
+    set_coefficients(coefficients);
   }
 
   // The Hessian and gradient from the coefficients of the monomials of x.
