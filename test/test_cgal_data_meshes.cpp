@@ -30,7 +30,7 @@
 // Release builds only (16 s in one, sequential); skipped with a message where
 // the archive is absent.
 #include <CGAL/Curvature_estimation.h>
-#include <CGAL/Curvature_estimation/internal/platelet_fit.h>
+#include <CGAL/Curvature_estimation/internal/face_graph_platelet.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>

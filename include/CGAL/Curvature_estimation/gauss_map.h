@@ -7,8 +7,8 @@
 #include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/vertex_normals.h>
 #include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
+#include <CGAL/Curvature_estimation/internal/face_graph_platelet.h>
 #include <CGAL/Curvature_estimation/internal/gauss_map_differential.h>
-#include <CGAL/Curvature_estimation/internal/platelet_fit.h>
 #include <CGAL/Curvature_estimation/internal/shape_matrix_estimate.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -96,10 +96,7 @@ void gauss_map_curvatures(const FaceGraph& g, const NamedParameters& np = parame
   constexpr bool given_normals = internal::has_parameter<NamedParameters, ::CGAL::internal_np::vertex_normal_map_t>();
   static const Eigen::Vector3d no_normal = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
 
-  internal::reject_ball_radius<NamedParameters>("gauss_map_curvatures");
-  const internal::Platelet_fit_settings settings = internal::platelet_fit_settings(np, "gauss_map_curvatures");
-  const Vertex_normal_method normal_method =
-    internal::parameter_or(np, internal_np::vertex_normal_method, Vertex_normal_method::quadric_fit);
+  const internal::Fit_parameters fit = internal::fit_parameters(np, "gauss_map_curvatures");
   internal::estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
     using VPM = std::decay_t<decltype(vpm)>;
     // First every vertex's unit normal, since each is used by all its neighbors.
@@ -113,9 +110,9 @@ void gauss_map_curvatures(const FaceGraph& g, const NamedParameters& np = parame
       }
     } else {
       const internal::Vertex_normal_estimator<FaceGraph, VPM> estimator{
-        internal::Platelet_fitter<FaceGraph, VPM>(g, vpm, settings), normal_method, true};
-      internal::estimate_at_vertices<ConcurrencyTag, false, false>(
-        vertices(g), estimator, [](vertex_descriptor) { return Eigen::Vector3d(); },
+        internal::Platelet_fitter<FaceGraph, VPM>(g, vpm, fit.settings), fit.normal_method, true};
+      internal::estimate_at_vertices<ConcurrencyTag, false>(
+        vertices(g), estimator,
         [&](vertex_descriptor v, const Eigen::Vector3d& n) { normals->set(v, n.squaredNorm() > 0 ? n : no_normal); });
     }
     // Then the differential at each vertex.

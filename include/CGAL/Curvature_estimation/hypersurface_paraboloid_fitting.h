@@ -12,7 +12,7 @@
 #include <CGAL/Curvature_estimation/Tetrahedral_complex_traits.h>
 #include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
-#include <CGAL/Curvature_estimation/internal/platelet_fit.h>
+#include <CGAL/Curvature_estimation/internal/fit_parameters.h>
 #include <CGAL/Curvature_estimation/internal/tetrahedral_platelet_fit.h>
 
 #include <CGAL/tags.h>
@@ -213,12 +213,8 @@ void hypersurface_paraboloid_fitting_curvatures(const TetrahedralComplex& comple
   using Stars = Tetrahedral_complex_stars<TetrahedralComplex>;
   using Fitter = internal::Tetrahedral_platelet_fitter<Stars>;
 
-  internal::reject_ball_radius<NamedParameters>("hypersurface_paraboloid_fitting_curvatures");
-  const internal::Platelet_fit_settings settings =
-    internal::platelet_fit_settings(np, "hypersurface_paraboloid_fitting_curvatures");
-  const Vertex_normal_method normal_method =
-    internal::parameter_or(np, internal_np::vertex_normal_method, Vertex_normal_method::quadric_fit);
-  if (normal_method != Vertex_normal_method::quadric_fit && normal_method != Vertex_normal_method::area_weighted)
+  const internal::Fit_parameters fit = internal::fit_parameters(np, "hypersurface_paraboloid_fitting_curvatures");
+  if (fit.normal_method != Vertex_normal_method::quadric_fit && fit.normal_method != Vertex_normal_method::area_weighted)
     throw std::invalid_argument("hypersurface_paraboloid_fitting_curvatures: vertex_normal_method must be "
                                 "quadric_fit or area_weighted");
   if constexpr (!internal::wants_curvature_output<NamedParameters>())
@@ -235,7 +231,8 @@ void hypersurface_paraboloid_fitting_curvatures(const TetrahedralComplex& comple
       points.push_back(to_vector_4(get(vpm, v)));
 
     // The hypersurface's maps are read and written on the calling thread.
-    const internal::Hypersurface_paraboloid_estimator<Fitter> estimator{Fitter(stars, points, settings), normal_method};
+    const internal::Hypersurface_paraboloid_estimator<Fitter> estimator{Fitter(stars, points, fit.settings),
+                                                                        fit.normal_method};
     internal::estimate_at_vertices<ConcurrencyTag, false, given_normals>(
       boost::irange(std::size_t(0), stars.size()), estimator,
       [&](std::size_t i) -> Eigen::Vector4d {

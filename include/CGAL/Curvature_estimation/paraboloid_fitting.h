@@ -7,7 +7,7 @@
 #include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/Vertex_normal_method.h>
 #include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
-#include <CGAL/Curvature_estimation/internal/platelet_fit.h>
+#include <CGAL/Curvature_estimation/internal/face_graph_platelet.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
@@ -130,15 +130,10 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag,
 void paraboloid_fitting_curvatures(const FaceGraph& g,
                                    const NamedParameters& np = parameters::default_values())
 {
-
-  internal::reject_ball_radius<NamedParameters>("paraboloid_fitting_curvatures");
-  const internal::Platelet_fit_settings settings =
-    internal::platelet_fit_settings(np, "paraboloid_fitting_curvatures");
-  const Vertex_normal_method normal_method =
-    internal::parameter_or(np, internal_np::vertex_normal_method, Vertex_normal_method::quadric_fit);
+  const internal::Fit_parameters fit = internal::fit_parameters(np, "paraboloid_fitting_curvatures");
   internal::estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
     return internal::Paraboloid_estimator<FaceGraph, std::decay_t<decltype(vpm)>>{
-      internal::Platelet_fitter<FaceGraph, std::decay_t<decltype(vpm)>>(g, vpm, settings), normal_method};
+      internal::Platelet_fitter<FaceGraph, std::decay_t<decltype(vpm)>>(g, vpm, fit.settings), fit.normal_method};
   });
 }
 

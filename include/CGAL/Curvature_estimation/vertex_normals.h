@@ -10,9 +10,9 @@
 
 #include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
-#include <CGAL/Curvature_estimation/internal/face_average_normal.h>
 #include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
-#include <CGAL/Curvature_estimation/internal/platelet_fit.h>
+#include <CGAL/Curvature_estimation/internal/face_average_normal.h>
+#include <CGAL/Curvature_estimation/internal/face_graph_platelet.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
@@ -173,10 +173,7 @@ void estimate_vertex_normals(const FaceGraph& g,
 
   const GT traits = choose_parameter<GT>(get_parameter(np, ::CGAL::internal_np::geom_traits));
   const VPM vpm = internal::parameter_or(np, ::CGAL::internal_np::vertex_point, get_const_property_map(CGAL::vertex_point, g));
-  const Vertex_normal_method method =
-    internal::parameter_or(np, internal_np::vertex_normal_method, Vertex_normal_method::quadric_fit);
-  internal::reject_ball_radius<NamedParameters>("estimate_vertex_normals");
-  const internal::Platelet_fit_settings settings = internal::platelet_fit_settings(np, "estimate_vertex_normals");
+  const internal::Fit_parameters fit = internal::fit_parameters(np, "estimate_vertex_normals");
 
   constexpr bool write_status = internal::has_parameter<NamedParameters, internal_np::vertex_estimation_status_map_t>();
 
@@ -185,9 +182,9 @@ void estimate_vertex_normals(const FaceGraph& g,
   const Vector_3 no_normal = construct_vector(no_value, no_value, no_value);
 
   const internal::Vertex_normal_estimator<FaceGraph, VPM> estimator{
-    internal::Platelet_fitter<FaceGraph, VPM>(g, vpm, settings), method, false};
-  internal::estimate_at_vertices<ConcurrencyTag, false, false>(
-    vertices(g), estimator, [](vertex_descriptor) { return Eigen::Vector3d(); },
+    internal::Platelet_fitter<FaceGraph, VPM>(g, vpm, fit.settings), fit.normal_method, false};
+  internal::estimate_at_vertices<ConcurrencyTag, false>(
+    vertices(g), estimator,
     [&](vertex_descriptor v, const Eigen::Vector3d& n) {
       const bool estimated = n.squaredNorm() > 0;
       put(normals, v, estimated ? construct_vector(FT(n.x()), FT(n.y()), FT(n.z())) : no_normal);

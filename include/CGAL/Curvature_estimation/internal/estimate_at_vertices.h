@@ -25,6 +25,8 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <Eigen/Core>
+
 #include <type_traits>
 #include <utility>
 
@@ -77,6 +79,15 @@ void estimate_at_vertices(const VertexRange& vertices, const LocalEstimator& est
     auto compute(Vertex v, const Normal& given) { return estimator.estimate(v, with_normals ? &given : nullptr); }
   };
   for_each_vertex<ConcurrencyTag, concurrent_maps>(vertices, Worker{estimator, load_normal}, store);
+}
+
+// The same for a local estimator that takes no given normals (as one of
+// normals, or over a precomputed table of them).
+template <typename ConcurrencyTag, bool concurrent_maps, typename VertexRange, typename LocalEstimator, typename Store>
+void estimate_at_vertices(const VertexRange& vertices, const LocalEstimator& estimator, Store store)
+{
+  estimate_at_vertices<ConcurrencyTag, concurrent_maps, false>(
+    vertices, estimator, [](const auto&) { return Eigen::Vector3d(); }, store);
 }
 
 // A surface estimator: the outputs of `np` at every vertex of `g`, from the local

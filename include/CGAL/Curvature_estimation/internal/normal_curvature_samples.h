@@ -10,9 +10,10 @@
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_NORMAL_CURVATURE_SAMPLES_H
 
 #include <CGAL/Curvature_estimation/parameters.h>
-#include <CGAL/Curvature_estimation/internal/face_average_normal.h>
 #include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
-#include <CGAL/Curvature_estimation/internal/platelet_fit.h>
+#include <CGAL/Curvature_estimation/internal/face_average_normal.h>
+#include <CGAL/Curvature_estimation/internal/face_graph_platelet.h>
+#include <CGAL/Curvature_estimation/internal/local_coordinates.h>
 #include <CGAL/Curvature_estimation/internal/shape_matrix_estimate.h>
 #include <CGAL/Curvature_estimation/internal/tangent_frame.h>
 
@@ -51,7 +52,7 @@ public:
   using halfedge_descriptor = typename Graph_traits::halfedge_descriptor;
   using face_descriptor = typename Graph_traits::face_descriptor;
 
-  Normal_curvature_sampler(const FaceGraph& g, VertexPointMap vpm) : g_(&g), vpm_(vpm) {}
+  Normal_curvature_sampler(const FaceGraph& g, VertexPointMap vpm) : local_(g, vpm) {}
 
   // Fills `samples` at `v` for the unit `normal` and its tangent frame; returns the
   // length scale of the coordinates (the mean distance from v to its neighbors),
@@ -62,15 +63,11 @@ public:
                 std::vector<Normal_curvature_sample>& samples)
   {
     samples.clear();
-    const FaceGraph& g = *g_;
-    center_ = point(v);
-    if (!center_.allFinite())
+    if (!local_.center_on(v))
       return 0;
-    scale_ = neighbor_length_scale(v, g, vpm_, center_);
-    if (!(scale_ > 0))
-      return 0;
+    const FaceGraph& g = local_.graph();
     for (halfedge_descriptor h : halfedges_around_target(v, g)) {
-      const Eigen::Vector3d d = local(source(h, g));
+      const Eigen::Vector3d d = local_(source(h, g));
       const double d2 = d.squaredNorm();
       if (!d.allFinite() || !(d2 > 0))
         continue;
@@ -87,21 +84,18 @@ public:
       add_face_weights(face(opposite(h, g), g), s);
       samples.push_back(s);
     }
-    return scale_;
+    return local_.scale();
   }
 
 private:
-  Eigen::Vector3d point(vertex_descriptor u) const { return point_in_double(vpm_, u); }
-
-  Eigen::Vector3d local(vertex_descriptor u) const { return (point(u) - center_) / scale_; }
-
   // Area and centroid weight of face f (any polygon: Newell's area, the mean of
   // the vertices), in the scaled coordinates; degenerate or non-finite faces add nothing.
   void add_face_weights(face_descriptor f, Normal_curvature_sample& s) const
   {
     if (f == Graph_traits::null_face())
       return;
-    const Face_walk walk = walk_face(halfedge(f, *g_), *g_, [this](vertex_descriptor u) { return local(u); });
+    const FaceGraph& g = local_.graph();
+    const Face_walk walk = walk_face(halfedge(f, g), g, [this](vertex_descriptor u) { return local_(u); });
     const double area = 0.5 * walk.newell.norm();
     const double centroid_weight = 1 / (walk.vertex_sum / walk.size).squaredNorm();
     if (!std::isfinite(area) || !(area > 0) || !std::isfinite(centroid_weight))
@@ -110,10 +104,7 @@ private:
     s.centroid_weight += centroid_weight;
   }
 
-  const FaceGraph* g_;
-  VertexPointMap vpm_;
-  Eigen::Vector3d center_ = Eigen::Vector3d::Zero();
-  double scale_ = 1;
+  Vertex_local_coordinates<FaceGraph, VertexPointMap> local_;
 };
 
 // Taubin's tensor (Taubin 1995; eq. 17): M = sum_i w_i k_i t_i t_i^T with the
@@ -182,16 +173,12 @@ template <typename ConcurrencyTag, typename FaceGraph, typename NamedParameters,
 void normal_curvature_sample_curvatures(const FaceGraph& g, const NamedParameters& np, const char* caller,
                                         Solve solve)
 {
-
-  reject_ball_radius<NamedParameters>(caller);
-  const Platelet_fit_settings settings = platelet_fit_settings(np, caller);
-  const Vertex_normal_method method =
-    parameter_or(np, internal_np::vertex_normal_method, Vertex_normal_method::quadric_fit);
+  const Fit_parameters fit = fit_parameters(np, caller);
   estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
     using VPM = std::decay_t<decltype(vpm)>;
-    return Normal_curvature_sample_estimator<FaceGraph, VPM, Solve>{Platelet_fitter<FaceGraph, VPM>(g, vpm, settings),
+    return Normal_curvature_sample_estimator<FaceGraph, VPM, Solve>{Platelet_fitter<FaceGraph, VPM>(g, vpm, fit.settings),
                                                                     Normal_curvature_sampler<FaceGraph, VPM>(g, vpm),
-                                                                    method, solve, {}};
+                                                                    fit.normal_method, solve, {}};
   });
 }
 

@@ -3,7 +3,7 @@
 // (FaceGraph, tangent dimension 2) and hypersurfaces of R^4 (tetrahedral
 // complexes, tangent dimension 3): gather the k-ring, express it in a tangent
 // frame, fit the paraboloid, widen while ill-conditioned; and the second-order
-// normal that the fit uses by default.
+// normal that the fit uses by default. Its settings come from fit_parameters.h.
 //
 // The core, Platelet_fit_core<Neighborhood>, knows nothing of meshes. A
 // Neighborhood policy gives
@@ -19,66 +19,31 @@
 //                                           over scale, finite[i] whether offsets[i] is
 //   restart_from_hyperplane                 see estimate_normal
 //   estimate(status, curvature, scale)      the result from the curvature in the fit's frame
-// Models: Face_graph_platelet (here) and Tetrahedral_platelet (tetrahedral_platelet_fit.h).
+// Models: Face_graph_platelet (face_graph_platelet.h) and Tetrahedral_platelet
+// (tetrahedral_platelet_fit.h).
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_PLATELET_FIT_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_PLATELET_FIT_H
 
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
-#include <CGAL/Curvature_estimation/parameters.h>
-#include <CGAL/Curvature_estimation/internal/face_average_normal.h>
-#include <CGAL/Curvature_estimation/internal/neighborhood.h>
+#include <CGAL/Curvature_estimation/Vertex_normal_method.h>
+#include <CGAL/Curvature_estimation/internal/fit_parameters.h>
+#include <CGAL/Curvature_estimation/internal/local_coordinates.h>
 #include <CGAL/Curvature_estimation/internal/quadric_fit.h>
 #include <CGAL/Curvature_estimation/internal/shape_operator.h>
-#include <CGAL/Curvature_estimation/internal/surface_estimate.h>
+#include <CGAL/Curvature_estimation/internal/symmetric_eigen.h>
 #include <CGAL/Curvature_estimation/internal/tangent_frame.h>
-
-#include <CGAL/boost/graph/helpers.h>
-#include <CGAL/number_utils.h>
 
 #include <Eigen/Core>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <limits>
-#include <stdexcept>
-#include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Curvature_estimation {
 namespace internal {
-
-struct Platelet_fit_settings
-{
-  int rings = 1;            // rings an interior vertex starts with
-  int boundary_rings = 1;   // rings a boundary vertex starts with
-  int max_rings = 3;        // widening stops here
-  double max_condition = 1e3;
-  // Whether test (b) of quadric_fit.h (whitened coordinates) may accept the
-  // widest neighborhood where test (a) refuses every one; false: test (a) alone.
-  bool whitened_conditioning = true;
-};
-
-// The settings from the named parameters, with the documented defaults;
-// `caller` names the public function in error messages.
-template <typename NamedParameters>
-Platelet_fit_settings platelet_fit_settings(const NamedParameters& np, const char* caller)
-{
-  Platelet_fit_settings settings;
-  settings.rings = parameter_or(np, internal_np::neighborhood_rings, 1);
-  settings.boundary_rings = parameter_or(np, internal_np::boundary_neighborhood_rings, settings.rings);
-  settings.max_rings = parameter_or(np, internal_np::max_neighborhood_rings, 3);
-  settings.max_condition = parameter_or(np, internal_np::max_condition_number, 1e3);
-  const std::string where = std::string(caller) + ": ";
-  if (settings.rings < 1 || settings.boundary_rings < 1)
-    throw std::invalid_argument(where + "neighborhood_rings and boundary_neighborhood_rings must be at least 1");
-  if (settings.max_rings < settings.rings || settings.max_rings < settings.boundary_rings)
-    throw std::invalid_argument(where + "max_neighborhood_rings must be at least the starting rings");
-  if (!(settings.max_condition > 1))
-    throw std::invalid_argument(where + "max_condition_number must be greater than 1");
-  return settings;
-}
 
 // The cubic fit of a boundary normal: over at least 3 rings (with 2, an edge
 // vertex of a grid has only three rows of samples, too few for cubic terms in
@@ -89,59 +54,6 @@ Platelet_fit_settings platelet_fit_settings(const NamedParameters& np, const cha
 // are singular in the tangent plane above 1e16).
 constexpr int cubic_normal_min_rings = 3;
 constexpr double cubic_normal_condition_factor = 1e3;
-
-// The unit normal of the least-squares hyperplane through `count` points: the
-// eigenvector of the smallest eigenvalue of their scatter matrix, by cyclic
-// Jacobi rotations (Eigen's iterative solver warns under GCC 12's -Wmaybe-uninitialized).
-template <int N>
-Eigen::Matrix<double, N, 1> least_squares_hyperplane_normal(const Eigen::Matrix<double, N, 1>* points,
-                                                            std::size_t count)
-{
-  using Vector = Eigen::Matrix<double, N, 1>;
-  using Square = Eigen::Matrix<double, N, N>;
-  Vector mean = Vector::Zero();
-  for (std::size_t i = 0; i < count; ++i)
-    mean += points[i];
-  mean /= double(count);
-  Square scatter = Square::Zero();
-  for (std::size_t i = 0; i < count; ++i)
-    scatter.noalias() += (points[i] - mean) * (points[i] - mean).transpose();
-  Square vectors = Square::Identity();
-  for (int sweep = 0; sweep < 50; ++sweep) {
-    double off = 0;
-    for (int p = 0; p < N; ++p)
-      for (int q = p + 1; q < N; ++q)
-        off += scatter(p, q) * scatter(p, q);
-    if (!(off > 1e-30 * scatter.squaredNorm()))
-      break;
-    for (int p = 0; p < N; ++p)
-      for (int q = p + 1; q < N; ++q) {
-        if (scatter(p, q) == 0)
-          continue;
-        const double theta = 0.5 * (scatter(q, q) - scatter(p, p)) / scatter(p, q);
-        const double t = (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1));
-        const double c = 1 / std::sqrt(t * t + 1), s = t * c;
-        for (int k = 0; k < N; ++k) {  // scatter <- J^T scatter J, vectors <- vectors J
-          const double a = scatter(k, p), b = scatter(k, q);
-          scatter(k, p) = c * a - s * b;
-          scatter(k, q) = s * a + c * b;
-        }
-        for (int k = 0; k < N; ++k) {
-          const double a = scatter(p, k), b = scatter(q, k);
-          scatter(p, k) = c * a - s * b;
-          scatter(q, k) = s * a + c * b;
-        }
-        for (int k = 0; k < N; ++k) {
-          const double a = vectors(k, p), b = vectors(k, q);
-          vectors(k, p) = c * a - s * b;
-          vectors(k, q) = s * a + c * b;
-        }
-      }
-  }
-  int smallest = 0;
-  scatter.diagonal().minCoeff(&smallest);
-  return vectors.col(smallest);
-}
 
 template <typename Neighborhood>
 class Platelet_fit_core
@@ -154,10 +66,8 @@ public:
   using Vector = Eigen::Matrix<double, N, 1>;
   using Tangents = Eigen::Matrix<double, N, D>;
 
-  // `a` and `b` construct the neighborhood: the mesh and its point map.
-  template <typename A, typename B>
-  Platelet_fit_core(const A& a, const B& b, const Platelet_fit_settings& settings)
-    : neighborhood_(a, b), settings_(settings)
+  Platelet_fit_core(Neighborhood neighborhood, const Platelet_fit_settings& settings)
+    : neighborhood_(std::move(neighborhood)), settings_(settings)
   {}
 
   // Hamann's fit: the paraboloid through the k-ring in the tangent frame of the
@@ -205,9 +115,7 @@ private:
     for (std::size_t i = 1; i < end; ++i) {
       const Vector offset = neighborhood_.point(neighborhood_.vertices()[i]) - center_;
       offsets_.push_back(offset);
-      double length = offset.norm();
-      if (!(length > 1e-150 && length < 1e150))
-        length = offset.stableNorm();  // no overflow or underflow for huge or tiny meshes
+      const double length = safe_norm(offset);
       if (std::isfinite(length)) {
         length_sum += length;
         ++length_count;
@@ -409,75 +317,6 @@ private:
   // normal). 0: it starts on the settings' rings.
   int curvature_rings_ = 0;
 };
-
-// The neighborhood policy of a FaceGraph: k-rings by halfedge circulation, the
-// area-weighted normal (or another face average) as the first-order normal.
-template <typename FaceGraph, typename VertexPointMap>
-class Face_graph_platelet
-{
-public:
-  static constexpr int ambient_dimension = 3;
-  static constexpr bool restart_from_hyperplane = false;
-  using Vertex = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
-  using Estimate = Surface_estimate;
-
-  Face_graph_platelet(const FaceGraph& g, VertexPointMap vpm) : g_(&g), vpm_(vpm) {}
-
-  Eigen::Vector3d point(Vertex v) const { return point_in_double(vpm_, v); }
-  void start(Vertex v) { rings_.start(v, *g_); }
-  bool extend() { return rings_.extend(*g_); }
-  int rings() const { return rings_.rings(); }
-  const std::vector<Vertex>& vertices() const { return rings_.vertices(); }
-  std::size_t ring_end(int r) const { return rings_.ring_end(r); }
-  bool center_on_border(Vertex) const { return rings_.center_on_border(); }
-
-  // Face averages need no neighborhood.
-  static bool platelet_for_normal(Vertex_normal_method method) { return method == Vertex_normal_method::quadric_fit; }
-
-  // The area-weighted normal from the gathered 1-ring for quadric_fit, and for
-  // area_weighted where the 1-ring is gathered and its faces are triangles (the same
-  // normal, without walking the faces again); else the face average by `method`.
-  Eigen::Vector3d initial_normal(Vertex v, Vertex_normal_method method, bool gathered,
-                                 const std::vector<Eigen::Vector3d>& offsets, const std::vector<char>& finite,
-                                 double) const
-  {
-    const bool from_ring = method == Vertex_normal_method::quadric_fit ||
-                           (gathered && method == Vertex_normal_method::area_weighted && rings_.faces_are_triangles());
-    return from_ring ? corner_normal_sum(v, offsets, finite) : face_average_normal(v, *g_, vpm_, method);
-  }
-
-  static Surface_estimate estimate(Estimation_status status, const Graph_curvature<3>& curvature, double scale)
-  {
-    return Surface_estimate::from_principal(status, curvature.curvatures[0] / scale, curvature.curvatures[1] / scale,
-                                            curvature.directions.col(0), curvature.directions.col(1),
-                                            curvature.normal);
-  }
-
-private:
-  // The sum of the faces' corner normals at the center, from the gathered 1-ring:
-  // the area-weighted normal on a triangle mesh, without walking the faces again.
-  Eigen::Vector3d corner_normal_sum(Vertex v, const std::vector<Eigen::Vector3d>& offsets,
-                                    const std::vector<char>& finite) const
-  {
-    if (!rings_.one_ring_in_fan_order())
-      return face_average_normal(v, *g_, vpm_, Vertex_normal_method::area_weighted);
-    const std::size_t valence = rings_.ring_end(1) - 1;
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (std::size_t k = 0; k < valence; ++k) {
-      const std::size_t next = k + 1 < valence ? k + 2 : 1;
-      if (rings_.has_face(k) && finite[1 + k] && finite[next])
-        sum += offsets[next].cross(offsets[1 + k]);
-    }
-    return sum;
-  }
-
-  const FaceGraph* g_;
-  VertexPointMap vpm_;
-  Ring_collector<FaceGraph> rings_;
-};
-
-template <typename FaceGraph, typename VertexPointMap>
-using Platelet_fitter = Platelet_fit_core<Face_graph_platelet<FaceGraph, VertexPointMap>>;
 
 } // namespace internal
 } // namespace Curvature_estimation

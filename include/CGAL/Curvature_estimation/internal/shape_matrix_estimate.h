@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The estimators that end with a 2x2 shape matrix in a tangent frame (Gauss map,
-// Taubin, Chen-Schmitt): curvatures from the matrix, and the local length scale.
+// Taubin, Chen-Schmitt): curvatures from the matrix.
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_SHAPE_MATRIX_ESTIMATE_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_SHAPE_MATRIX_ESTIMATE_H
 
@@ -54,28 +54,6 @@ inline Surface_estimate shape_estimate_from_matrix(const Eigen::Matrix2d& shape,
                                                              max_direction, min_direction, normal);
   result.gaussian_curvature = gaussian;
   return result;
-}
-
-// The local length scale at `v`: the mean distance from `center` (the point of v)
-// to the neighbors joined to v by an edge, ignoring coincident and non-finite
-// ones; 0 when there is none. Coordinates divided by it make the estimators
-// scale invariant.
-template <typename FaceGraph, typename VertexPointMap>
-double neighbor_length_scale(typename boost::graph_traits<FaceGraph>::vertex_descriptor v, const FaceGraph& g,
-                              const VertexPointMap& vpm, const Eigen::Vector3d& center)
-{
-  if (halfedge(v, g) == boost::graph_traits<FaceGraph>::null_halfedge())
-    return 0;
-  double length_sum = 0;
-  int count = 0;
-  for (auto h : halfedges_around_target(v, g)) {
-    const double length = safe_norm(Eigen::Vector3d(point_in_double(vpm, source(h, g)) - center));
-    if (std::isfinite(length) && length > 0) {
-      length_sum += length;
-      ++count;
-    }
-  }
-  return count == 0 ? 0 : length_sum / count;
 }
 
 } // namespace internal

@@ -6,7 +6,11 @@
 //  - a normal matrix or scatter matrix whose SMALLEST eigenvalue decides (a condition
 //    number, the normal of a plane of points or directions): symmetric_eigen_accurate,
 //    Eigen's iterative QL solver, which keeps the small eigenvalues' relative accuracy
-//    that the direct solver loses.
+//    that the direct solver loses;
+//  - the scatter matrix of points in R^4 whose smallest eigenvector is the normal of
+//    their least-squares hyperplane (the tetrahedral fit's restart):
+//    least_squares_hyperplane_normal, by cyclic Jacobi rotations, because Eigen's
+//    iterative solver at that size warns under GCC 12's -Wmaybe-uninitialized.
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_SYMMETRIC_EIGEN_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_SYMMETRIC_EIGEN_H
 
@@ -14,6 +18,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <cmath>
+#include <cstddef>
 
 namespace CGAL {
 namespace Curvature_estimation {
@@ -61,6 +66,59 @@ bool symmetric_eigen_accurate(const Eigen::Matrix<double, D, D>& m, Eigen::Matri
   values = eigen.eigenvalues();
   vectors = eigen.eigenvectors();
   return true;
+}
+
+// The unit normal of the least-squares hyperplane through `count` points: the
+// eigenvector of the smallest eigenvalue of their scatter matrix, by cyclic
+// Jacobi rotations (Eigen's iterative solver warns under GCC 12's -Wmaybe-uninitialized).
+template <int N>
+Eigen::Matrix<double, N, 1> least_squares_hyperplane_normal(const Eigen::Matrix<double, N, 1>* points,
+                                                            std::size_t count)
+{
+  using Vector = Eigen::Matrix<double, N, 1>;
+  using Square = Eigen::Matrix<double, N, N>;
+  Vector mean = Vector::Zero();
+  for (std::size_t i = 0; i < count; ++i)
+    mean += points[i];
+  mean /= double(count);
+  Square scatter = Square::Zero();
+  for (std::size_t i = 0; i < count; ++i)
+    scatter.noalias() += (points[i] - mean) * (points[i] - mean).transpose();
+  Square vectors = Square::Identity();
+  for (int sweep = 0; sweep < 50; ++sweep) {
+    double off = 0;
+    for (int p = 0; p < N; ++p)
+      for (int q = p + 1; q < N; ++q)
+        off += scatter(p, q) * scatter(p, q);
+    if (!(off > 1e-30 * scatter.squaredNorm()))
+      break;
+    for (int p = 0; p < N; ++p)
+      for (int q = p + 1; q < N; ++q) {
+        if (scatter(p, q) == 0)
+          continue;
+        const double theta = 0.5 * (scatter(q, q) - scatter(p, p)) / scatter(p, q);
+        const double t = (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1));
+        const double c = 1 / std::sqrt(t * t + 1), s = t * c;
+        for (int k = 0; k < N; ++k) {  // scatter <- J^T scatter J, vectors <- vectors J
+          const double a = scatter(k, p), b = scatter(k, q);
+          scatter(k, p) = c * a - s * b;
+          scatter(k, q) = s * a + c * b;
+        }
+        for (int k = 0; k < N; ++k) {
+          const double a = scatter(p, k), b = scatter(q, k);
+          scatter(p, k) = c * a - s * b;
+          scatter(q, k) = s * a + c * b;
+        }
+        for (int k = 0; k < N; ++k) {
+          const double a = vectors(k, p), b = vectors(k, q);
+          vectors(k, p) = c * a - s * b;
+          vectors(k, q) = s * a + c * b;
+        }
+      }
+  }
+  int smallest = 0;
+  scatter.diagonal().minCoeff(&smallest);
+  return vectors.col(smallest);
 }
 
 } // namespace internal

@@ -110,8 +110,16 @@ private:
   Tetrahedral_ring_collector rings_;
 };
 
+// The platelet fit at the vertices of a tetrahedral complex, whose points are `points`.
 template <typename Stars>
-using Tetrahedral_platelet_fitter = Platelet_fit_core<Tetrahedral_platelet<Stars>>;
+class Tetrahedral_platelet_fitter : public Platelet_fit_core<Tetrahedral_platelet<Stars>>
+{
+public:
+  Tetrahedral_platelet_fitter(const Stars& stars, const std::vector<Eigen::Vector4d>& points,
+                              const Platelet_fit_settings& settings)
+    : Platelet_fit_core<Tetrahedral_platelet<Stars>>(Tetrahedral_platelet<Stars>(stars, points), settings)
+  {}
+};
 
 } // namespace internal
 } // namespace Curvature_estimation

@@ -1,0 +1,109 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The neighborhood policy that runs the platelet fit of platelet_fit.h at the
+// vertices of a FaceGraph, and the fitter it makes.
+#ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_FACE_GRAPH_PLATELET_H
+#define CGAL_CURVATURE_ESTIMATION_INTERNAL_FACE_GRAPH_PLATELET_H
+
+#include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
+#include <CGAL/Curvature_estimation/Vertex_normal_method.h>
+#include <CGAL/Curvature_estimation/internal/face_average_normal.h>
+#include <CGAL/Curvature_estimation/internal/fit_parameters.h>
+#include <CGAL/Curvature_estimation/internal/local_coordinates.h>
+#include <CGAL/Curvature_estimation/internal/neighborhood.h>
+#include <CGAL/Curvature_estimation/internal/platelet_fit.h>
+#include <CGAL/Curvature_estimation/internal/shape_operator.h>
+#include <CGAL/Curvature_estimation/internal/surface_estimate.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Curvature_estimation {
+namespace internal {
+
+// The neighborhood policy of a FaceGraph: k-rings by halfedge circulation, the
+// area-weighted normal (or another face average) as the first-order normal.
+template <typename FaceGraph, typename VertexPointMap>
+class Face_graph_platelet
+{
+public:
+  static constexpr int ambient_dimension = 3;
+  static constexpr bool restart_from_hyperplane = false;
+  using Vertex = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
+  using Estimate = Surface_estimate;
+
+  Face_graph_platelet(const FaceGraph& g, VertexPointMap vpm) : g_(&g), vpm_(vpm) {}
+
+  Eigen::Vector3d point(Vertex v) const { return point_in_double(vpm_, v); }
+  void start(Vertex v) { rings_.start(v, *g_); }
+  bool extend() { return rings_.extend(*g_); }
+  int rings() const { return rings_.rings(); }
+  const std::vector<Vertex>& vertices() const { return rings_.vertices(); }
+  std::size_t ring_end(int r) const { return rings_.ring_end(r); }
+  bool center_on_border(Vertex) const { return rings_.center_on_border(); }
+
+  // Face averages need no neighborhood.
+  static bool platelet_for_normal(Vertex_normal_method method) { return method == Vertex_normal_method::quadric_fit; }
+
+  // The area-weighted normal from the gathered 1-ring for quadric_fit, and for
+  // area_weighted where the 1-ring is gathered and its faces are triangles (the same
+  // normal, without walking the faces again); else the face average by `method`.
+  Eigen::Vector3d initial_normal(Vertex v, Vertex_normal_method method, bool gathered,
+                                 const std::vector<Eigen::Vector3d>& offsets, const std::vector<char>& finite,
+                                 double) const
+  {
+    const bool from_ring = method == Vertex_normal_method::quadric_fit ||
+                           (gathered && method == Vertex_normal_method::area_weighted && rings_.faces_are_triangles());
+    return from_ring ? corner_normal_sum(v, offsets, finite) : face_average_normal(v, *g_, vpm_, method);
+  }
+
+  static Surface_estimate estimate(Estimation_status status, const Graph_curvature<3>& curvature, double scale)
+  {
+    return Surface_estimate::from_principal(status, curvature.curvatures[0] / scale, curvature.curvatures[1] / scale,
+                                            curvature.directions.col(0), curvature.directions.col(1),
+                                            curvature.normal);
+  }
+
+private:
+  // The sum of the faces' corner normals at the center, from the gathered 1-ring:
+  // the area-weighted normal on a triangle mesh, without walking the faces again.
+  Eigen::Vector3d corner_normal_sum(Vertex v, const std::vector<Eigen::Vector3d>& offsets,
+                                    const std::vector<char>& finite) const
+  {
+    if (!rings_.one_ring_in_fan_order())
+      return face_average_normal(v, *g_, vpm_, Vertex_normal_method::area_weighted);
+    const std::size_t valence = rings_.ring_end(1) - 1;
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (std::size_t k = 0; k < valence; ++k) {
+      const std::size_t next = k + 1 < valence ? k + 2 : 1;
+      if (rings_.has_face(k) && finite[1 + k] && finite[next])
+        sum += offsets[next].cross(offsets[1 + k]);
+    }
+    return sum;
+  }
+
+  const FaceGraph* g_;
+  VertexPointMap vpm_;
+  Ring_collector<FaceGraph> rings_;
+};
+
+// The platelet fit at the vertices of a FaceGraph.
+template <typename FaceGraph, typename VertexPointMap>
+class Platelet_fitter : public Platelet_fit_core<Face_graph_platelet<FaceGraph, VertexPointMap>>
+{
+public:
+  Platelet_fitter(const FaceGraph& g, VertexPointMap vpm, const Platelet_fit_settings& settings)
+    : Platelet_fit_core<Face_graph_platelet<FaceGraph, VertexPointMap>>(Face_graph_platelet<FaceGraph, VertexPointMap>(g, vpm),
+                                                                       settings)
+  {}
+};
+
+} // namespace internal
+} // namespace Curvature_estimation
+} // namespace CGAL
+
+#endif // CGAL_CURVATURE_ESTIMATION_INTERNAL_FACE_GRAPH_PLATELET_H

@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The named parameters of Hamann's platelet fit, read once for every public
+// function that runs it (for its curvatures or for its quadric_fit normal): the
+// neighborhood rings, the condition threshold and the normal method, with the
+// documented defaults, checked.
+#ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_FIT_PARAMETERS_H
+#define CGAL_CURVATURE_ESTIMATION_INTERNAL_FIT_PARAMETERS_H
+
+#include <CGAL/Curvature_estimation/Vertex_normal_method.h>
+#include <CGAL/Curvature_estimation/parameters.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace CGAL {
+namespace Curvature_estimation {
+namespace internal {
+
+struct Platelet_fit_settings
+{
+  int rings = 1;            // rings an interior vertex starts with
+  int boundary_rings = 1;   // rings a boundary vertex starts with
+  int max_rings = 3;        // widening stops here
+  double max_condition = 1e3;
+  // Whether test (b) of quadric_fit.h (whitened coordinates) may accept the
+  // widest neighborhood where test (a) refuses every one; false: test (a) alone.
+  bool whitened_conditioning = true;
+};
+
+struct Fit_parameters
+{
+  Platelet_fit_settings settings;
+  Vertex_normal_method normal_method;
+};
+
+// The parameters from `np`; `caller` names the public function in error messages.
+// Throws std::invalid_argument where one is out of its range or `ball_radius` is given.
+template <typename NamedParameters>
+Fit_parameters fit_parameters(const NamedParameters& np, const char* caller)
+{
+  reject_ball_radius<NamedParameters>(caller);
+  Platelet_fit_settings settings;
+  settings.rings = parameter_or(np, internal_np::neighborhood_rings, 1);
+  settings.boundary_rings = parameter_or(np, internal_np::boundary_neighborhood_rings, settings.rings);
+  settings.max_rings = parameter_or(np, internal_np::max_neighborhood_rings, 3);
+  settings.max_condition = parameter_or(np, internal_np::max_condition_number, 1e3);
+  const std::string where = std::string(caller) + ": ";
+  if (settings.rings < 1 || settings.boundary_rings < 1)
+    throw std::invalid_argument(where + "neighborhood_rings and boundary_neighborhood_rings must be at least 1");
+  if (settings.max_rings < settings.rings || settings.max_rings < settings.boundary_rings)
+    throw std::invalid_argument(where + "max_neighborhood_rings must be at least the starting rings");
+  if (!(settings.max_condition > 1))
+    throw std::invalid_argument(where + "max_condition_number must be greater than 1");
+  return {settings, parameter_or(np, internal_np::vertex_normal_method, Vertex_normal_method::quadric_fit)};
+}
+
+} // namespace internal
+} // namespace Curvature_estimation
+} // namespace CGAL
+
+#endif // CGAL_CURVATURE_ESTIMATION_INTERNAL_FIT_PARAMETERS_H
