@@ -49,8 +49,10 @@
   CGAL_CE_PARAMETERS_SHARED_WITH_CGAL_6(X)   \
   CGAL_CE_OWN_PARAMETERS(X)
 
-// CGAL's parameters that functions of this package read; re-declared as members
-// so that chaining them never falls back to CGAL's own class.
+// CGAL's parameters that a chain of this package may carry, re-declared as members
+// so that chaining them never falls back to CGAL's own class. The estimators read
+// the first three; the index maps are only carried, so that one chain can also
+// serve CGAL's functions that need them.
 #define CGAL_CE_CGAL_PARAMETERS(X)      \
   X(vertex_point_t, vertex_point_map)   \
   X(vertex_normal_map_t, vertex_normal_map) \
