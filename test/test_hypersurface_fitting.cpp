@@ -425,27 +425,13 @@ TEST(Hypersurface_paraboloid_fitting, SequentialAndParallelAreIdentical)
 
 using Tr_kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Tr = CGAL::Delaunay_triangulation_3<Tr_kernel>;
-using Tr_vertex_handle = Tr::Vertex_handle;
 
-// f at a triangulation vertex.
-struct Scalar_map
-{
-  using key_type = Tr_vertex_handle;
-  using value_type = double;
-  using reference = double;
-  using category = boost::readable_property_map_tag;
-  const Function* fn;
-  friend double get(const Scalar_map& m, Tr_vertex_handle v)
-  {
-    return m.fn->f(Eigen::Vector3d(v->point().x(), v->point().y(), v->point().z()));
-  }
-};
 // A Delaunay triangulation of a jittered point set and the indexed mesh of its
 // finite cells (same vertex and cell order) give the same numbers.
 TEST(Hypersurface_paraboloid_fitting, Triangulation3AndIndexedMeshGiveTheSameNumbers)
 {
   using K = Tr_kernel;
-  using Vertex_handle = Tr_vertex_handle;
+  using Vertex_handle = Tr::Vertex_handle;
   const Function fn = table_functions()[4];
   CGAL::Random random(11);
   std::vector<K::Point_3> points;
@@ -456,7 +442,11 @@ TEST(Hypersurface_paraboloid_fitting, Triangulation3AndIndexedMeshGiveTheSameNum
                             -1 + k / 3.5 + random.get_double(-0.05, 0.05));
   const Tr tr(points.begin(), points.end());
 
-  const auto vpm = CE::make_graph_point_map(CE::Tetrahedral_complex_traits<Tr>::Default_point_map(), Scalar_map{&fn});
+  std::map<Vertex_handle, double> f;
+  for (auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+    f[v] = fn.f(Eigen::Vector3d(v->point().x(), v->point().y(), v->point().z()));
+  const auto vpm = CE::make_graph_point_map(CE::Tetrahedral_complex_traits<Tr>::Default_point_map(),
+                                            boost::make_assoc_property_map(f));
 
   std::map<Vertex_handle, double> H_map, K_map;
   std::map<Vertex_handle, Status> status_map;
