@@ -24,6 +24,7 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -331,7 +332,7 @@ TEST(Paraboloid_fitting, ParallelOnAPolyhedronWithAssociativeMapsMatchesSequenti
 TEST(Paraboloid_fitting, IrregularDelaunayMeshIsFiniteEverywhereAndConverges)
 {
   const ce_test::Graph_function f = ce_test::hamann_table1_functions()[8];
-  double previous_rms = 0, previous_h = 0;
+  ce_test::Convergence H_convergence;
   for (std::size_t points : {1000, 4000, 16000}) {
     const ce_test::Soup soup = ce_test::delaunay_graph_soup(f, points, -1, 1, 11);
     const Mesh mesh = ce_test::to_mesh<Mesh>(soup);
@@ -353,15 +354,14 @@ TEST(Paraboloid_fitting, IrregularDelaunayMeshIsFiniteEverywhereAndConverges)
     std::printf("Delaunay %5zu points (h %.4f, %zu widened): H RMS all %.2e interior %.2e, K RMS all %.2e interior %.2e",
                 points, h, widened, all.mean.stats().rms, interior.mean.stats().rms, all.gaussian.stats().rms,
                 interior.gaussian.stats().rms);
-    if (previous_rms > 0)
-      std::printf(", interior H order %.2f", ce_test::observed_order(previous_rms, interior.mean.stats().rms, previous_h, h));
+    const std::optional<double> order = H_convergence.add(h, interior.mean.stats().rms);
+    if (order)
+      std::printf(", interior H order %.2f", *order);
     std::printf("\n");
     // Degree-2 fits on irregular stencils converge at about first order.
-    if (previous_rms > 0) {
-      EXPECT_GT(ce_test::observed_order(previous_rms, interior.mean.stats().rms, previous_h, h), 0.7);
+    if (order) {
+      EXPECT_GT(*order, 0.7);
     }
-    previous_rms = interior.mean.stats().rms;
-    previous_h = h;
   }
 }
 

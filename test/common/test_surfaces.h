@@ -47,6 +47,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <optional>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -819,6 +820,26 @@ inline double observed_order(double e_coarse, double e_fine, double h_coarse, do
 {
   return std::log(e_coarse / e_fine) / std::log(h_coarse / h_fine);
 }
+
+/// The observed order of one error along a refinement: `add(h, e)` at each mesh size h,
+/// coarse to fine, gives the order of e against the previous size (none at the first).
+class Convergence
+{
+public:
+  std::optional<double> add(double h, double error)
+  {
+    std::optional<double> order;
+    if (h_ > 0)
+      order = observed_order(error_, error, h_, h);
+    h_ = h;
+    error_ = error;
+    return order;
+  }
+
+private:
+  double h_ = 0.0;
+  double error_ = 0.0;
+};
 
 } // namespace ce_test
 
