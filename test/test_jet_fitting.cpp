@@ -110,9 +110,7 @@ TEST(Jet_fitting, OnAnIrregularMeshDegreeTwoIsFirstOrderAndDegreeFourHigher)
   // Jittered in the parameter domain: no symmetric stencil cancels the odd terms.
   double previous_d2 = 0, previous_d4 = 0;
   for (int n : {60, 120, 240}) {
-    const ce_test::Soup soup = ce_test::torus_soup(R, r, n, n / 2, 0.2, 5);
-    const Mesh mesh = ce_test::to_mesh<Mesh>(soup);
-    const auto exact = ce_test::torus_curvatures(R, r, soup);
+    const auto [soup, mesh, exact] = ce_test::sampled_torus<Mesh>(R, r, n, n / 2, 0.2, 5);
     const double d2 = ce_test::curvature_errors(estimate(mesh, params::default_values()), exact).mean.stats().rms;
     const double d4 = ce_test::curvature_errors(
                         estimate(mesh, params::jet_degree(4).monge_degree(4).neighborhood_rings(3)), exact)

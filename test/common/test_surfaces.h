@@ -760,6 +760,26 @@ std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> soup_order_ve
   return out;
 }
 
+/// A soup, the `Mesh` made of it by `to_mesh` and the exact curvature at its points.
+template <class Mesh>
+struct Sampled_surface
+{
+  Soup soup;
+  Mesh mesh;
+  std::vector<Exact_curvature> exact;
+};
+
+/// The torus of `torus_soup` (same arguments) as a `Mesh`, with its exact curvature.
+template <class Mesh>
+Sampled_surface<Mesh> sampled_torus(double R, double r, std::size_t n_u, std::size_t n_v, double jitter = 0.0,
+                                    std::uint32_t seed = 1)
+{
+  Sampled_surface<Mesh> t{torus_soup(R, r, n_u, n_v, jitter, seed), Mesh(), {}};
+  t.mesh = to_mesh<Mesh>(t.soup);
+  t.exact = torus_curvatures(R, r, t.soup);
+  return t;
+}
+
 // ===========================================================================
 // 4. Error statistics
 // ===========================================================================
