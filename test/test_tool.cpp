@@ -325,6 +325,24 @@ std::string obj(const Indexed& m)
   return s.str();
 }
 
+// An ASCII PLY file: the header's element and property lines `elements`, then `data`.
+std::string ascii_ply(const std::string& elements, const std::string& data = "")
+{
+  return "ply\nformat ascii 1.0\n" + elements + "end_header\n" + data;
+}
+
+// The header lines of `count` vertices with float coordinates x, y, z.
+std::string ply_vertex_element(std::size_t count)
+{
+  return "element vertex " + std::to_string(count) + "\nproperty float x\nproperty float y\nproperty float z\n";
+}
+
+// The header lines of `count` faces, lists of vertex indices.
+std::string ply_face_element(std::size_t count)
+{
+  return "element face " + std::to_string(count) + "\nproperty list uchar int vertex_indices\n";
+}
+
 // Binary STL of the faces of m (triangles), with the given float coordinates.
 std::string binary_stl(const Indexed& m)
 {
@@ -418,38 +436,34 @@ TEST_F(ToolTest, TruncatedFiles)
                                                   " 1 1 1 1 1\n").string()}, "OFF face with 5 colour values");
   const std::string stl = binary_stl(icosphere(1, 1));
   expect_rejected({file("truncated.stl", stl.substr(0, stl.size() / 2)).string()}, "truncated binary STL");
-  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
-                          "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n"
-                          "0 0 0\n1 0 0\n0 1 0\n";
+  const std::string ply = ascii_ply(ply_vertex_element(4) + ply_face_element(4), "0 0 0\n1 0 0\n0 1 0\n");
   expect_rejected({file("truncated.ply", ply).string()}, "truncated PLY");
   // Found by the fuzz target: a property before any element crashes CGAL 5.5's PLY reader.
-  const std::string no_element = "ply\nformat ascii 1.0\nelemnt vertex 4\nproperty float x\nproperty float y\n"
-                                 "property float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  const std::string four_points = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  const std::string no_element =
+    ascii_ply("elemnt vertex 4\nproperty float x\nproperty float y\nproperty float z\n", four_points);
   expect_rejected({file("property_before_element.ply", no_element).string()}, "PLY property before any element");
   // Also found by the fuzz target: CGAL 5.5 reads x, y, z as float or double whatever their declared type.
-  const std::string uchar_x = "ply\nformat ascii 1.0\nelement vertex 3\nproperty uchar x\nproperty float y\n"
-                              "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
-                              "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const std::string uchar_x = ascii_ply(
+    "element vertex 3\nproperty uchar x\nproperty float y\nproperty float z\n" + ply_face_element(1), triangle);
   expect_rejected({file("uchar_coordinate.ply", uchar_x).string()}, "PLY coordinate of integer type");
-  const std::string list_y = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty list uchar float y\n"
-                             "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
-                             "0 1 0 0\n1 1 0 0\n0 1 1 0\n3 0 1 2\n";
+  const std::string list_y = ascii_ply(
+    "element vertex 3\nproperty float x\nproperty list uchar float y\nproperty float z\n" + ply_face_element(1),
+    "0 1 0 0\n1 1 0 0\n0 1 1 0\n3 0 1 2\n");
   expect_rejected({file("list_coordinate.ply", list_y).string()}, "PLY coordinate of list type");
   // Found by the fuzz target: a negative count (read as size_t: 2^64 - 4 items, a
   // reader that never ends), made to look small by a positive one of another element.
-  const std::string negative = "ply\nformat ascii 1.0\nelement other -4\nelement vertex 4\nproperty float x\n"
-                               "property float y\nproperty float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  const std::string negative = ascii_ply("element other -4\n" + ply_vertex_element(4), four_points);
   expect_rejected({file("negative_count.ply", negative).string()}, "PLY negative element count");
   // And a count with trailing letters, which CGAL reads as its leading digits.
-  const std::string trailing = "ply\nformat ascii 1.0\nelement vertex 419999999999999999et\nend_header\n";
+  const std::string trailing = ascii_ply("element vertex 419999999999999999et\n");
   expect_rejected({file("count_with_letters.ply", trailing).string()}, "PLY count with trailing letters");
   // And a second line starting with end_header: CGAL reads it as the format line.
   const std::string format_line = "ply\nend_header_ ascii 1.0\nproperty float y\nelement face 0\nend_header\n";
   expect_rejected({file("end_header_format.ply", format_line).string()}, "PLY end_header on the format line");
   // A list count of a signed or 32-bit type: CGAL resizes the list to it, cast to size_t.
-  const std::string int_count = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                                "property float z\nelement face 1\nproperty list int int vertex_indices\nend_header\n"
-                                "0 0 0\n1 0 0\n0 1 0\n-1 0 1 2\n";
+  const std::string int_count = ascii_ply(ply_vertex_element(3) + "element face 1\nproperty list int int vertex_indices\n",
+                                          "0 0 0\n1 0 0\n0 1 0\n-1 0 1 2\n");
   expect_rejected({file("int_list_count.ply", int_count).string()}, "PLY list count of type int");
 }
 
@@ -461,9 +475,7 @@ TEST_F(ToolTest, IndicesOutOfRange)
   expect_rejected({file("range.obj", obj(m)).string()}, "OBJ index out of range");
   expect_rejected({file("negative.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 -1\n").string()}, "OFF negative index");
   expect_rejected({file("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n").string()}, "OBJ index 0");
-  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                          "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
-                          "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n";
+  const std::string ply = ascii_ply(ply_vertex_element(3) + ply_face_element(1), "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n");
   expect_rejected({file("range.ply", ply).string()}, "PLY index out of range");
 }
 
@@ -472,8 +484,7 @@ TEST_F(ToolTest, EmptyMesh)
   expect_rejected({file("empty.off", "OFF\n0 0 0\n").string()}, "empty OFF");
   expect_rejected({file("points_only.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n").string()}, "OFF without faces");
   expect_rejected({file("empty.obj", "# nothing\n").string()}, "empty OBJ");
-  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\n"
-                          "property float z\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n";
+  const std::string ply = ascii_ply(ply_vertex_element(0) + ply_face_element(0));
   expect_rejected({file("empty.ply", ply).string()}, "empty PLY");
   std::string stl(80, ' ');
   stl.append(4, '\0');
