@@ -231,31 +231,24 @@ template <typename FaceGraph, typename VertexPointMap>
 class Gauss_map_estimator
 {
 public:
-  using Graph_traits = boost::graph_traits<FaceGraph>;
-  using vertex_descriptor = typename Graph_traits::vertex_descriptor;
-  using halfedge_descriptor = typename Graph_traits::halfedge_descriptor;
+  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<FaceGraph>::halfedge_descriptor;
 
   // The normals are the table's (shared by the copies of all threads).
   static constexpr bool uses_given_normals = false;
 
   Gauss_map_estimator(const FaceGraph& g, VertexPointMap vpm, std::shared_ptr<const Vertex_normal_table<FaceGraph>> normals,
                       Gauss_map_differential_method method = Gauss_map_differential_method::least_squares_2_ring)
-    : g_(&g), vpm_(vpm), normals_(std::move(normals)), method_(method),
+    : local_(g, vpm), normals_(std::move(normals)), method_(method),
       differential_(method == Gauss_map_differential_method::face_centroid_weighted)
   {}
 
   Surface_estimate estimate(vertex_descriptor v, const Eigen::Vector3d*)
   {
-    const FaceGraph& g = *g_;
     Eigen::Vector3d normal;
-    if (!lookup(v, normal))
+    if (!lookup(v, normal) || !local_.center_on(v))
       return Surface_estimate();
-    center_ = point_in_double(vpm_, v);
-    if (!center_.allFinite())
-      return Surface_estimate();
-    scale_ = neighbor_length_scale(v, g, vpm_, center_);
-    if (!(scale_ > 0))
-      return Surface_estimate();
+    const FaceGraph& g = local_.graph();
 
     const Tangent_frame tangents = tangent_basis<3>(normal);
     if (method_ == Gauss_map_differential_method::least_squares_2_ring) {
@@ -266,10 +259,10 @@ public:
       Eigen::Vector3d neighbor_normal;
       for (std::size_t i = 1; i < neighbors.size(); ++i)
         if (lookup(neighbors[i], neighbor_normal))
-          least_squares_.add(tangents, local(neighbors[i]), neighbor_normal - normal);
+          least_squares_.add(tangents, local_(neighbors[i]), neighbor_normal - normal);
       if (!least_squares_.determined())
         return Surface_estimate();
-      return shape_estimate_from_matrix(least_squares_.shape_matrix(), tangents, normal, scale_, true);
+      return shape_estimate_from_matrix(least_squares_.shape_matrix(), tangents, normal, local_.scale(), true);
     }
 
     differential_.clear();
@@ -282,34 +275,29 @@ public:
       Eigen::Vector3d vertex_sum = Eigen::Vector3d::Zero();
       int n = 0;
       for (halfedge_descriptor k : halfedges_around_face(h, g)) {
-        vertex_sum += local(target(k, g));
+        vertex_sum += local_(target(k, g));
         ++n;
       }
       Eigen::Vector3d next_normal, previous_normal;
       if (!vertex_sum.allFinite() || !lookup(next_vertex, next_normal) || !lookup(previous_vertex, previous_normal))
         continue;
-      differential_.add_corner(local(next_vertex), local(previous_vertex), next_normal - normal,
+      differential_.add_corner(local_(next_vertex), local_(previous_vertex), next_normal - normal,
                                previous_normal - normal, vertex_sum / n);
     }
     if (differential_.empty())
       return Surface_estimate();
-    return shape_estimate_from_matrix(differential_.shape_matrix(tangents), tangents, normal, scale_, true);
+    return shape_estimate_from_matrix(differential_.shape_matrix(tangents), tangents, normal, local_.scale(), true);
   }
 
 private:
   bool lookup(vertex_descriptor u, Eigen::Vector3d& n) const { return normals_->find(u, n); }
 
-  Eigen::Vector3d local(vertex_descriptor u) const { return (point_in_double(vpm_, u) - center_) / scale_; }
-
-  const FaceGraph* g_;
-  VertexPointMap vpm_;
+  Vertex_local_coordinates<FaceGraph, VertexPointMap> local_;
   std::shared_ptr<const Vertex_normal_table<FaceGraph>> normals_;
   Gauss_map_differential_method method_;
   Gauss_map_differential differential_;
   Gauss_map_least_squares least_squares_;
   Ring_collector<FaceGraph> rings_;
-  Eigen::Vector3d center_ = Eigen::Vector3d::Zero();
-  double scale_ = 1;
 };
 
 } // namespace internal
