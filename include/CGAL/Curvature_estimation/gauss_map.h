@@ -3,9 +3,9 @@
 #ifndef CGAL_CURVATURE_ESTIMATION_GAUSS_MAP_H
 #define CGAL_CURVATURE_ESTIMATION_GAUSS_MAP_H
 
+#include <CGAL/Curvature_estimation/Neighbor_weighting.h>
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/parameters.h>
-#include <CGAL/Curvature_estimation/taubin.h>  // Neighbor_weighting
 #include <CGAL/Curvature_estimation/vertex_normals.h>
 #include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
 #include <CGAL/Curvature_estimation/internal/face_graph_platelet.h>

@@ -3,6 +3,7 @@
 #ifndef CGAL_CURVATURE_ESTIMATION_TAUBIN_H
 #define CGAL_CURVATURE_ESTIMATION_TAUBIN_H
 
+#include <CGAL/Curvature_estimation/Neighbor_weighting.h>
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/vertex_normals.h>
@@ -14,19 +15,6 @@
 
 namespace CGAL {
 namespace Curvature_estimation {
-
-/// \ingroup PkgCurvatureEstimationRef
-/// The weights of the neighbors in `taubin_curvatures()`. Each neighbor q
-/// joined to the vertex p by an edge is weighted by the faces on the edge (p, q)
-/// (two, or one at the boundary); the weights are normalised to sum 1.
-enum class Neighbor_weighting : unsigned char
-{
-  /// The sum of the areas of the faces on the edge (Taubin 1995).
-  area,
-  /// The sum of the centroid weights `1/|G_f - p|^2` of the faces on the
-  /// edge, `G_f` the centroid of face f (Chen and Wu 2004).
-  centroid
-};
 
 /// \ingroup PkgCurvatureEstimationRef
 ///
