@@ -11,10 +11,28 @@
 
 #include <CGAL/tags.h>
 
+#include <Eigen/Core>
+
 #include <vector>
 
 namespace CGAL {
 namespace Curvature_estimation {
+
+namespace internal {
+
+// Euler's formula fitted to the samples by unweighted least squares, as Chen and
+// Schmitt; the paper measures the angles from the first edge, and the fit does not
+// depend on that choice of frame. The threshold only refuses directions that are
+// (nearly) not three distinct ones.
+inline bool chen_schmitt_shape_matrix(const std::vector<Normal_curvature_sample>& samples, Eigen::Matrix2d& shape)
+{
+  Euler_fit fit;
+  for (const Normal_curvature_sample& sample : samples)
+    fit.add(sample.direction, sample.curvature);
+  return fit.solve(1e5, shape);
+}
+
+} // namespace internal
 
 /// \ingroup PkgCurvatureEstimationRef
 ///
@@ -67,13 +85,7 @@ void chen_schmitt_curvatures(const FaceGraph& g, const NamedParameters& np = par
   internal::normal_curvature_sample_curvatures<ConcurrencyTag>(
     g, np, "chen_schmitt_curvatures",
     [](const std::vector<internal::Normal_curvature_sample>& samples, Eigen::Matrix2d& shape) {
-      // Unweighted, as Chen and Schmitt; the paper measures the angles from the
-      // first edge, and the fit does not depend on that choice of frame. The
-      // threshold only refuses directions that are (nearly) not three distinct ones.
-      internal::Euler_fit fit;
-      for (const internal::Normal_curvature_sample& sample : samples)
-        fit.add(sample.direction, sample.curvature);
-      return fit.solve(1e5, shape);
+      return internal::chen_schmitt_shape_matrix(samples, shape);
     });
 }
 

@@ -17,6 +17,9 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <Eigen/Core>
+
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -24,6 +27,57 @@
 
 namespace CGAL {
 namespace Curvature_estimation {
+
+namespace internal {
+
+// The differential that `np` asks for: without neighbor_weighting the least-squares
+// fit over the 2-ring, with it Chen, Wu and Chi's per-face Jacobians so weighted.
+template <typename NamedParameters>
+Gauss_map_differential_method gauss_map_differential_method(const NamedParameters& np)
+{
+  if constexpr (!has_parameter<NamedParameters, internal_np::neighbor_weighting_t>()) {
+    (void)np;
+    return Gauss_map_differential_method::least_squares_2_ring;
+  } else {
+    const Neighbor_weighting weighting = ::CGAL::parameters::get_parameter(np, internal_np::neighbor_weighting);
+    if (weighting == Neighbor_weighting::centroid)
+      return Gauss_map_differential_method::face_centroid_weighted;
+    if (weighting == Neighbor_weighting::area)
+      return Gauss_map_differential_method::face_area_weighted;
+    throw std::invalid_argument("gauss_map_curvatures: neighbor_weighting must be area or centroid");
+  }
+}
+
+// Every vertex's unit normal, NaN where there is none: the given ones of `np`,
+// normalised, else estimated by `fit`'s method. Computed before the differential,
+// which reads each vertex's normal at all its neighbors.
+template <typename ConcurrencyTag, typename FaceGraph, typename VertexPointMap, typename NamedParameters>
+std::shared_ptr<const Vertex_normal_table<FaceGraph>> gauss_map_normals(const FaceGraph& g, const VertexPointMap& vpm,
+                                                                        const NamedParameters& np,
+                                                                        const Fit_parameters& fit)
+{
+  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
+  const Eigen::Vector3d no_normal = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  auto normals = std::make_shared<Vertex_normal_table<FaceGraph>>(g);
+  if constexpr (has_parameter<NamedParameters, ::CGAL::internal_np::vertex_normal_map_t>()) {
+    const auto normal_map = ::CGAL::parameters::get_parameter(np, ::CGAL::internal_np::vertex_normal_map);
+    for (vertex_descriptor v : vertices(g)) {
+      const Eigen::Vector3d n = load_given_normal<true>(normal_map, v);
+      const double length = n.norm();
+      normals->set(v, length > 0 && std::isfinite(length) ? Eigen::Vector3d(n / length) : no_normal);
+    }
+  } else {
+    (void)np;
+    const Vertex_normal_estimator<FaceGraph, VertexPointMap> estimator{
+      Platelet_fitter<FaceGraph, VertexPointMap>(g, vpm, fit.settings), fit.normal_method, true};
+    estimate_at_vertices<ConcurrencyTag, false>(vertices(g), estimator, [&](vertex_descriptor v, const Eigen::Vector3d& n) {
+      normals->set(v, n.squaredNorm() > 0 ? n : no_normal);
+    });
+  }
+  return normals;
+}
+
+} // namespace internal
 
 /// \ingroup PkgCurvatureEstimationRef
 ///
@@ -126,44 +180,11 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename NamedParameters = parameters::Default_named_parameters>
 void gauss_map_curvatures(const FaceGraph& g, const NamedParameters& np = parameters::default_values())
 {
-  using ::CGAL::parameters::get_parameter;
-  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
-  constexpr bool given_normals = internal::has_parameter<NamedParameters, ::CGAL::internal_np::vertex_normal_map_t>();
-  static const Eigen::Vector3d no_normal = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
-
   const internal::Fit_parameters fit = internal::fit_parameters(np, "gauss_map_curvatures");
-  // No neighbor_weighting: the least-squares differential; one: Chen, Wu and Chi's per-face gradients.
-  internal::Gauss_map_differential_method differential_method =
-    internal::Gauss_map_differential_method::least_squares_2_ring;
-  if constexpr (internal::has_parameter<NamedParameters, internal_np::neighbor_weighting_t>()) {
-    const Neighbor_weighting weighting = get_parameter(np, internal_np::neighbor_weighting);
-    if (weighting == Neighbor_weighting::centroid)
-      differential_method = internal::Gauss_map_differential_method::face_centroid_weighted;
-    else if (weighting == Neighbor_weighting::area)
-      differential_method = internal::Gauss_map_differential_method::face_area_weighted;
-    else
-      throw std::invalid_argument("gauss_map_curvatures: neighbor_weighting must be area or centroid");
-  }
+  const internal::Gauss_map_differential_method method = internal::gauss_map_differential_method(np);
   internal::estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
-    using VPM = std::decay_t<decltype(vpm)>;
-    // First every vertex's unit normal, since each is used by all its neighbors.
-    auto normals = std::make_shared<internal::Vertex_normal_table<FaceGraph>>(g);
-    if constexpr (given_normals) {
-      const auto normal_map = get_parameter(np, CGAL::internal_np::vertex_normal_map);
-      for (vertex_descriptor v : vertices(g)) {
-        const Eigen::Vector3d n = internal::load_given_normal<true>(normal_map, v);
-        const double length = n.norm();
-        normals->set(v, length > 0 && std::isfinite(length) ? Eigen::Vector3d(n / length) : no_normal);
-      }
-    } else {
-      const internal::Vertex_normal_estimator<FaceGraph, VPM> estimator{
-        internal::Platelet_fitter<FaceGraph, VPM>(g, vpm, fit.settings), fit.normal_method, true};
-      internal::estimate_at_vertices<ConcurrencyTag, false>(
-        vertices(g), estimator,
-        [&](vertex_descriptor v, const Eigen::Vector3d& n) { normals->set(v, n.squaredNorm() > 0 ? n : no_normal); });
-    }
-    // Then the differential at each vertex.
-    return internal::Gauss_map_estimator<FaceGraph, VPM>(g, vpm, std::move(normals), differential_method);
+    return internal::Gauss_map_estimator<FaceGraph, std::decay_t<decltype(vpm)>>(
+      g, vpm, internal::gauss_map_normals<ConcurrencyTag>(g, vpm, np, fit), method);
   });
 }
 

@@ -11,10 +11,45 @@
 
 #include <CGAL/tags.h>
 
+#include <Eigen/Core>
+
+#include <cmath>
+
 #include <vector>
 
 namespace CGAL {
 namespace Curvature_estimation {
+
+namespace internal {
+
+// Taubin's tensor (Taubin 1995; eq. 17): M = sum_i w_i k_i t_i t_i^T with the
+// weights normalised to sum 1; its eigenvalues m1 >= m2 give k1 = 3 m1 - m2,
+// k2 = 3 m2 - m1 with the same eigenvectors, i.e. the shape matrix 4 M - tr(M) I.
+// False when the weights vanish or the tangents do not span the plane.
+inline bool taubin_shape_matrix(const std::vector<Normal_curvature_sample>& samples, bool area_weights,
+                                Eigen::Matrix2d& shape)
+{
+  Eigen::Matrix2d tensor = Eigen::Matrix2d::Zero(), spread = Eigen::Matrix2d::Zero();
+  double weight_sum = 0;
+  for (const Normal_curvature_sample& s : samples) {
+    const double w = area_weights ? s.area_weight : s.centroid_weight;
+    const Eigen::Matrix2d tt = s.direction * s.direction.transpose();
+    tensor += (w * s.curvature) * tt;
+    spread += w * tt;
+    weight_sum += w;
+  }
+  if (!(weight_sum > 0) || !std::isfinite(weight_sum))
+    return false;
+  tensor /= weight_sum;
+  spread /= weight_sum;
+  // det(spread) is sum_{i<j} w_i w_j sin^2(t_i, t_j): zero when all tangents are parallel.
+  if (!(spread.determinant() > 1e-12))
+    return false;
+  shape = 4 * tensor - tensor.trace() * Eigen::Matrix2d::Identity();
+  return true;
+}
+
+} // namespace internal
 
 /// \ingroup PkgCurvatureEstimationRef
 ///
