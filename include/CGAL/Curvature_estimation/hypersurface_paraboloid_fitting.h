@@ -102,7 +102,10 @@ void put_hypersurface_estimate(const NamedParameters& np, const Vertex& v, const
 /// and at boundary vertices a Gaussian-weighted fit with cubic terms over at least 3 rings
 /// (falling back to degree 2 where it is ill-conditioned), so that the normal is second
 /// order also at the boundary, where the cells' mean is only first order and gives an O(1)
-/// curvature error. `Vertex_normal_method::area_weighted` uses the cells' mean as is.
+/// curvature error. With that normal, at interior vertices, the curvature fit keeps the
+/// linear terms where they are determined, as on surfaces (see
+/// `paraboloid_fitting_curvatures()`). `Vertex_normal_method::area_weighted` uses the
+/// cells' mean as is, in Hamann's fit.
 /// Normals are oriented as the cells: for positively oriented tetrahedra of R^3 (as in
 /// `CGAL::Triangulation_3`) lifted to a graph, the normal points to increasing W.
 ///
