@@ -2,6 +2,7 @@
 // paraboloid_fitting_curvatures on meshes: reproduction of Hamann's Table 1,
 // convergence and sign on closed surfaces, invariances, mesh-type independence,
 // concurrency, irregular meshes and bad input.
+#include <CGAL/Curvature_estimation/gauss_map.h>
 #include <CGAL/Curvature_estimation/paraboloid_fitting.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -369,6 +370,30 @@ TEST(Paraboloid_fitting, DegenerateInputGetsNotEstimableAndNaNWithoutHarmingNeig
 
   Mesh empty;
   EXPECT_NO_THROW(estimate(empty));
+}
+
+// A thick-walled pipe of single bands of triangles, as CGAL's data pipe.off: at each vertex the
+// samples lie on the vertex's own circle and its two neighbor circles, near a conic through the
+// vertex on every ring, and the platelet fit (its normal's five unknowns) is not determined. The
+// default then gives the Gauss map's estimate with the status fallback; the paper's setting
+// (area-weighted normals in Hamann's fit) has no fallback.
+TEST(Paraboloid_fitting, WhereNoRingDeterminesTheFitTheDefaultFallsBackToTheGaussMap)
+{
+  const Mesh mesh = ce_test::to_mesh<Mesh>(ce_test::pipe_soup(0.17, 0.31, 1.0, 12));
+  const Estimates ours = estimate(mesh);
+  const Estimates gauss_map = ce_test::run_with_all_outputs<Kernel>(
+    mesh, [](const Mesh& m, const auto& np) { CE::gauss_map_curvatures(m, np); }, params::default_values());
+  for (std::size_t i = 0; i < ours.status.size(); ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(ours.status[i], Estimation_status::fallback);
+    EXPECT_EQ(gauss_map.status[i], Estimation_status::ok);
+    EXPECT_NEAR(ours.principal[i].max_curvature, gauss_map.principal[i].max_curvature, 1e-12);
+    EXPECT_NEAR(ours.principal[i].min_curvature, gauss_map.principal[i].min_curvature, 1e-12);
+    EXPECT_NEAR(ours.mean[i], gauss_map.mean[i], 1e-12);
+  }
+  const Estimates paper = estimate(mesh, params::vertex_normal_method(CE::Vertex_normal_method::area_weighted));
+  for (std::size_t i = 0; i < paper.status.size(); ++i)
+    EXPECT_NE(paper.status[i], Estimation_status::fallback) << i;
 }
 
 TEST(Paraboloid_fitting, ExactNormalsOnAGridWidenOnlyWhereTheOneRingIsIllConditioned)

@@ -43,7 +43,7 @@ void print_estimates(const std::vector<Row_type>& rows, std::size_t vertices, do
   print_range("mean curvature H", H);
   print_range("Gaussian curvature K", K);
   std::cout << "ok: " << ok << ", widened: " << widened;
-  if (fallback > 0)  // only the curve network has a fallback
+  if (fallback > 0)  // the curve network, the paraboloid fit and jet fitting have one
     std::cout << ", fallback: " << fallback;
   std::cout << ", failed (not estimable): " << failed << '\n';
 }

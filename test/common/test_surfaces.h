@@ -709,6 +709,33 @@ inline double signed_volume(const Soup& s)
   return v / 6.0;
 }
 
+/// A thick-walled pipe about the y-axis, shaped as CGAL's data mesh pipe.off: four circles of
+/// n points (inner radius r_inner and outer r_outer, at y = -length/2 and +length/2) joined by
+/// four walls of a single band of triangles each (inner and outer cylinder, two annular caps),
+/// faces oriented outward. Every vertex lies on a 90-degree crease. No params.
+inline Soup pipe_soup(double r_inner, double r_outer, double length, std::size_t n)
+{
+  if (!(r_outer > r_inner && r_inner > 0.0 && length > 0.0))
+    throw std::invalid_argument("ce_test: pipe_soup needs r_outer > r_inner > 0 and length > 0");
+  if (n < 3) throw std::invalid_argument("ce_test: pipe_soup needs n >= 3");
+  const double radius[4] = {r_inner, r_outer, r_outer, r_inner};
+  const double y[4] = {-0.5 * length, -0.5 * length, 0.5 * length, 0.5 * length};
+  Soup s;
+  for (std::size_t j = 0; j < 4; ++j)
+    for (std::size_t i = 0; i < n; ++i) {
+      const double u = 2.0 * pi * static_cast<double>(i) / static_cast<double>(n);
+      s.points.emplace_back(radius[j] * std::cos(u), y[j], radius[j] * std::sin(u));
+    }
+  for (std::size_t j = 0; j < 4; ++j)
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t i1 = (i + 1) % n, j1 = (j + 1) % 4;
+      internal::add_grid_quads(s.faces, i + n * j, i1 + n * j, i1 + n * j1, i + n * j1, Diagonal::anti);
+    }
+  if (signed_volume(s) < 0.0)
+    for (auto& f : s.faces) std::swap(f[1], f[2]);
+  return s;
+}
+
 /// Mean length of the (undirected) edges of the soup; a typical h for convergence studies.
 inline double mean_edge_length(const Soup& s)
 {

@@ -184,7 +184,8 @@ void gauss_map_curvatures(const FaceGraph& g, const NamedParameters& np = parame
   const internal::Gauss_map_differential_method method = internal::gauss_map_differential_method(np);
   internal::estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
     return internal::Gauss_map_estimator<FaceGraph, std::decay_t<decltype(vpm)>>(
-      g, vpm, internal::gauss_map_normals<ConcurrencyTag>(g, vpm, np, fit), method);
+      g, vpm, internal::Shared_vertex_normals<FaceGraph>{internal::gauss_map_normals<ConcurrencyTag>(g, vpm, np, fit)},
+      method);
   });
 }
 

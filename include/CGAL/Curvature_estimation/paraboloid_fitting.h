@@ -6,14 +6,17 @@
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/Vertex_normal_method.h>
+#include <CGAL/Curvature_estimation/vertex_normals.h>
 #include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
 #include <CGAL/Curvature_estimation/internal/face_graph_platelet.h>
+#include <CGAL/Curvature_estimation/internal/gauss_map_differential.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <cstddef>
 #include <stdexcept>
 #include <type_traits>
 
@@ -22,16 +25,44 @@ namespace Curvature_estimation {
 namespace internal {
 
 // Hamann's fit at one vertex, with the given normal or one estimated by `method`.
+// With the quadric_fit normal, where no ring determines the fit (nearly always
+// because the normal's fit is not determined: samples near a conic through the
+// vertex, as on the creases of CAD meshes triangulated by long thin fans), the
+// Gauss map's least-squares estimate (gauss_map_curvatures() with the same
+// settings), status fallback: it differentiates normals, first-order data, which
+// such stencils determine where the heights' second-order terms are not. Not
+// where the neighborhood, on every ring reached, has fewer neighbors than
+// Hamann's fit has unknowns (a lone triangle): no paraboloid is determined even
+// through them, which tells nothing of the curvature, and the vertex stays
+// not_estimable. The
+// Gauss map's normals are computed on demand: the fallback is rare (0.3% of the
+// vertices of CGAL's data meshes), and a table of all normals would cost a
+// second fit per vertex everywhere.
 template <typename FaceGraph, typename VertexPointMap>
-struct Paraboloid_estimator
+class Paraboloid_estimator
 {
-  Platelet_fitter<FaceGraph, VertexPointMap> fitter;
-  Vertex_normal_method method;
+public:
+  Paraboloid_estimator(const FaceGraph& g, VertexPointMap vpm, const Fit_parameters& fit)
+    : fitter_(g, vpm, fit.settings), method_(fit.normal_method),
+      gauss_map_(g, vpm, Vertex_normal_estimator<FaceGraph, VertexPointMap>{
+                           Platelet_fitter<FaceGraph, VertexPointMap>(g, vpm, fit.settings), fit.normal_method, true})
+  {}
 
   Surface_estimate estimate(typename boost::graph_traits<FaceGraph>::vertex_descriptor v, const Eigen::Vector3d* given)
   {
-    return given != nullptr ? fitter.fit(v, *given) : fitter.fit(v, method);
+    if (given != nullptr)
+      return fitter_.fit(v, *given);
+    const Surface_estimate result = fitter_.fit(v, method_);
+    if (result.status != Estimation_status::not_estimable || method_ != Vertex_normal_method::quadric_fit ||
+        fitter_.neighbors() < std::size_t(Taylor_fit<2, 2, 2>::unknowns))
+      return result;
+    return as_fallback(gauss_map_.estimate(v, nullptr));
   }
+
+private:
+  Platelet_fitter<FaceGraph, VertexPointMap> fitter_;
+  Vertex_normal_method method_;
+  Gauss_map_estimator<FaceGraph, VertexPointMap, Vertex_normal_estimator<FaceGraph, VertexPointMap>> gauss_map_;
 };
 
 } // namespace internal
@@ -62,6 +93,22 @@ struct Paraboloid_estimator
 /// it lowers it 3 to 9 times. Where the linear terms are not determined on any ring,
 /// and at boundary vertices (whose cubic normal is accurate enough that Hamann's
 /// fit does better there), the paraboloid is fitted without them.
+/// `area_weighted`, `angle_weighted` and `centroid_weighted` use the face average as
+/// is, in Hamann's fit (the paper's method with approximated normals).
+///
+/// **Fallback.** With the `quadric_fit` normal and no `vertex_normal_map`, a vertex
+/// where no ring up to `max_neighborhood_rings` determines the fit gets the estimate
+/// of `gauss_map_curvatures()` with the same parameters, with the status `fallback`.
+/// This happens where the samples lie near a conic through the vertex, so that the
+/// normal's quadratic fit (five unknowns) is not determined: the two rows of a single
+/// band of triangles, or the creases of CAD meshes triangulated by fans of long thin
+/// triangles, whose near and far ends are two clusters. The Gauss map differentiates
+/// the vertex normals, first-order data that such stencils do determine. A vertex
+/// with fewer than three neighbors on all those rings together (a lone triangle) is
+/// not estimable: not even Hamann's three coefficients are determined. Over the
+/// surface meshes of CGAL's data (414,841 vertices) the fit alone refuses 2,709;
+/// with the fallback, see `test_cgal_data_meshes` for the counts and for how close
+/// the fallback's values are to jet fitting's.
 /// `area_weighted`, `angle_weighted` and `centroid_weighted` use the face average as
 /// is, in Hamann's fit (the paper's method with approximated normals).
 ///
@@ -129,7 +176,7 @@ struct Paraboloid_estimator
 ///     \cgalParamType{`double`, greater than 1}
 ///     \cgalParamDefault{`1e3`}
 ///   \cgalParamNEnd
-///   \ceSurfaceOutputParameters{K = k1 k2, `ok`\, `widened` (see Widening above) or `not_estimable`}
+///   \ceSurfaceOutputParameters{K = k1 k2, `ok`\, `widened` (see Widening above)\, `fallback` (see Fallback above) or `not_estimable`}
 /// \cgalNamedParamsEnd
 ///
 /// \throws std::invalid_argument if a parameter is out of its range, or if `ball_radius`
@@ -142,8 +189,7 @@ void paraboloid_fitting_curvatures(const FaceGraph& g,
 {
   const internal::Fit_parameters fit = internal::fit_parameters(np, "paraboloid_fitting_curvatures");
   internal::estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
-    return internal::Paraboloid_estimator<FaceGraph, std::decay_t<decltype(vpm)>>{
-      internal::Platelet_fitter<FaceGraph, std::decay_t<decltype(vpm)>>(g, vpm, fit.settings), fit.normal_method};
+    return internal::Paraboloid_estimator<FaceGraph, std::decay_t<decltype(vpm)>>(g, vpm, fit);
   });
 }
 

@@ -43,10 +43,14 @@ struct Vertex_normal_estimator
   Eigen::Vector3d estimate(typename boost::graph_traits<FaceGraph>::vertex_descriptor v, const Eigen::Vector3d*)
   {
     Eigen::Vector3d n;
-    if (fitter.normal(v, method, n) ||
-        (fall_back && method == Vertex_normal_method::quadric_fit && fitter.normal(v, Vertex_normal_method::area_weighted, n)))
-      return n;
-    return Eigen::Vector3d::Zero();
+    return find(v, n) ? n : Eigen::Vector3d::Zero();
+  }
+
+  // The same as Gauss_map_estimator's normals, computed on demand; false where `v` has none.
+  bool find(typename boost::graph_traits<FaceGraph>::vertex_descriptor v, Eigen::Vector3d& n)
+  {
+    return fitter.normal(v, method, n) ||
+           (fall_back && method == Vertex_normal_method::quadric_fit && fitter.normal(v, Vertex_normal_method::area_weighted, n));
   }
 };
 

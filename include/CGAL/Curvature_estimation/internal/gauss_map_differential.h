@@ -218,8 +218,22 @@ enum class Gauss_map_differential_method : unsigned char
   face_area_weighted       // Gauss_map_differential, area weights
 };
 
+// A shared Vertex_normal_table as the normals of Gauss_map_estimator.
+template <typename FaceGraph>
+struct Shared_vertex_normals
+{
+  std::shared_ptr<const Vertex_normal_table<FaceGraph>> table;
+
+  bool find(typename boost::graph_traits<FaceGraph>::vertex_descriptor u, Eigen::Vector3d& n) const
+  {
+    return table->find(u, n);
+  }
+};
+
 // The Gauss-map estimate at one vertex of a FaceGraph (faces: any polygons;
-// border halfedges are skipped, so boundary vertices use the faces they have).
+// border halfedges are skipped, so boundary vertices use the faces they have),
+// with the unit normals of `Normals`: find(u, n), false where u has none
+// (Shared_vertex_normals, or normals computed on demand).
 //
 // Why the 2-ring for the least squares: on marching-tetrahedra meshes a vertex
 // near a grid corner has all its 1-ring within 1e-3 of the mean edge length h;
@@ -227,17 +241,17 @@ enum class Gauss_map_differential_method : unsigned char
 // distance reach O(10 / h) (measured |H| errors up to 119 with a 1-ring fit at 80 cells,
 // 1,579 with the per-face centroid weights). The 2-ring reaches the vertices at
 // distance ~h around such a cluster, and the unweighted fit is dominated by them.
-template <typename FaceGraph, typename VertexPointMap>
+template <typename FaceGraph, typename VertexPointMap, typename Normals = Shared_vertex_normals<FaceGraph>>
 class Gauss_map_estimator
 {
 public:
   using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<FaceGraph>::halfedge_descriptor;
 
-  // The normals are the table's (shared by the copies of all threads).
+  // The normals are those of `Normals`.
   static constexpr bool uses_given_normals = false;
 
-  Gauss_map_estimator(const FaceGraph& g, VertexPointMap vpm, std::shared_ptr<const Vertex_normal_table<FaceGraph>> normals,
+  Gauss_map_estimator(const FaceGraph& g, VertexPointMap vpm, Normals normals,
                       Gauss_map_differential_method method = Gauss_map_differential_method::least_squares_2_ring)
     : local_(g, vpm), normals_(std::move(normals)), method_(method),
       differential_(method == Gauss_map_differential_method::face_centroid_weighted)
@@ -290,10 +304,10 @@ public:
   }
 
 private:
-  bool lookup(vertex_descriptor u, Eigen::Vector3d& n) const { return normals_->find(u, n); }
+  bool lookup(vertex_descriptor u, Eigen::Vector3d& n) { return normals_.find(u, n); }
 
   Vertex_local_coordinates<FaceGraph, VertexPointMap> local_;
-  std::shared_ptr<const Vertex_normal_table<FaceGraph>> normals_;
+  Normals normals_;
   Gauss_map_differential_method method_;
   Gauss_map_differential differential_;
   Gauss_map_least_squares least_squares_;

@@ -101,6 +101,10 @@ public:
     return fit_curvature(normal);
   }
 
+  // The neighbors gathered by the last fit or normal, on every ring it reached
+  // (0 where its vertex had no finite point).
+  std::size_t neighbors() const { return offsets_.empty() ? 0 : offsets_.size() - 1; }
+
   // The unit normal by `method`; false where there is none.
   bool normal(Vertex v, Vertex_normal_method method, Vector& normal)
   {
@@ -115,11 +119,11 @@ private:
   // makes the fit scale invariant.
   bool gather(Vertex v)
   {
+    offsets_.clear();
     center_ = neighborhood_.point(v);
     if (!all_finite(center_))
       return false;
     neighborhood_.start(v);
-    offsets_.clear();
     offsets_.push_back(Vector::Zero());
     double length_sum = 0;
     int length_count = 0;

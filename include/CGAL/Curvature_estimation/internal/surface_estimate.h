@@ -105,6 +105,15 @@ void put_surface_estimate(const NamedParameters& np, VertexDescriptor v, const S
   (void)e;
 }
 
+// An estimator's documented fallback estimate: `e` with the status fallback
+// unless it is not estimable.
+inline Surface_estimate as_fallback(Surface_estimate e)
+{
+  if (e.status != Estimation_status::not_estimable)
+    e.status = Estimation_status::fallback;
+  return e;
+}
+
 // The given normal at `v` in double (read on the calling thread, see
 // for_each_vertex), or zero when no normal map is given.
 template <bool given, typename NormalMap, typename VertexDescriptor>
