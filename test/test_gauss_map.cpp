@@ -471,7 +471,9 @@ TEST(Gauss_map, RandomPolynomialFansReproduceTheReferenceMedians)
                          .neighbor_weighting(Neighbor_weighting::centroid));
           break;
         case chen_schmitt:
-          e = estimate(Method::chen_schmitt, mesh, params::vertex_normal_method(Vertex_normal_method::centroid_weighted));
+          e = estimate(Method::chen_schmitt, mesh,
+                       params::vertex_normal_method(Vertex_normal_method::centroid_weighted)
+                         .neighbor_weighting(Neighbor_weighting::uniform));
           break;
         case gauss_exact: e = estimate(Method::gauss_map, mesh, paper_differential().vertex_normal_map(normals)); break;
         case gauss_centroid:
@@ -693,6 +695,13 @@ TEST(Gauss_map, IsolatedAndNaNVerticesAreNotEstimableWithoutHarmingNeighbors)
                                                  mesh.add_property_map<vertex_descriptor, double>("v:h").first)
                                                  .neighborhood_rings(0)),
                std::invalid_argument);
+  // Each function refuses the weightings it does not define.
+  EXPECT_THROW(CE::gauss_map_curvatures(mesh, params::neighbor_weighting(Neighbor_weighting::uniform)),
+               std::invalid_argument);
+  EXPECT_THROW(CE::taubin_curvatures(mesh, params::neighbor_weighting(Neighbor_weighting::uniform)),
+               std::invalid_argument);
+  for (Neighbor_weighting w : {Neighbor_weighting::area, Neighbor_weighting::centroid})
+    EXPECT_THROW(CE::chen_schmitt_curvatures(mesh, params::neighbor_weighting(w)), std::invalid_argument);
 }
 
 // A Surface_mesh with removed vertices not yet collected has live vertices whose

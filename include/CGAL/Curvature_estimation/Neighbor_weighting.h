@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The weights of a vertex's neighbors or faces, a parameter of Taubin's estimator and of the Gauss map.
+// The weights of a vertex's neighbors or faces, a parameter of Taubin's estimator, of the Gauss map and of Chen-Schmitt.
 #ifndef CGAL_CURVATURE_ESTIMATION_NEIGHBOR_WEIGHTING_H
 #define CGAL_CURVATURE_ESTIMATION_NEIGHBOR_WEIGHTING_H
 
@@ -7,18 +7,22 @@ namespace CGAL {
 namespace Curvature_estimation {
 
 /// \ingroup PkgCurvatureEstimationRef
-/// The weights of the faces around a vertex p. In `taubin_curvatures()` each
+/// The weights of the neighbors or faces around a vertex p. In `taubin_curvatures()` each
 /// neighbor q joined to p by an edge is weighted by the faces on the edge (p, q)
-/// (two, or one at the boundary), the weights normalised to sum 1. In
-/// `gauss_map_curvatures()`, when given, they weight the per-face Jacobians of the
-/// normal (the paper's differential).
+/// (two, or one at the boundary), the weights normalised to sum 1 (`area` or
+/// `centroid`). In `gauss_map_curvatures()`, when given, they weight the per-face
+/// Jacobians of the normal (the paper's differential; `area` or `centroid`). In
+/// `chen_schmitt_curvatures()`, `uniform` selects the paper's unweighted fit over
+/// the 1-ring. A function given a value it does not list throws `std::invalid_argument`.
 enum class Neighbor_weighting : unsigned char
 {
   /// The areas of the faces (Taubin 1995).
   area,
   /// The centroid weights `1/|G_f - p|^2` of the faces, `G_f` the centroid of
   /// face f (Chen and Wu 2004; Chen, Wu and Chi 2005, eq. 23).
-  centroid
+  centroid,
+  /// Equal weights (Chen and Schmitt 1992).
+  uniform
 };
 
 } // namespace Curvature_estimation

@@ -3,6 +3,7 @@
 #ifndef CGAL_CURVATURE_ESTIMATION_CHEN_SCHMITT_H
 #define CGAL_CURVATURE_ESTIMATION_CHEN_SCHMITT_H
 
+#include <CGAL/Curvature_estimation/Neighbor_weighting.h>
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/vertex_normals.h>
@@ -13,6 +14,7 @@
 
 #include <Eigen/Core>
 
+#include <stdexcept>
 #include <vector>
 
 namespace CGAL {
@@ -20,15 +22,33 @@ namespace Curvature_estimation {
 
 namespace internal {
 
-// Euler's formula fitted to the samples by unweighted least squares, as Chen and
-// Schmitt; the paper measures the angles from the first edge, and the fit does not
-// depend on that choice of frame. The threshold only refuses directions that are
-// (nearly) not three distinct ones.
-inline bool chen_schmitt_shape_matrix(const std::vector<Normal_curvature_sample>& samples, Eigen::Matrix2d& shape)
+// Whether `np` asks for the paper's fit (`Neighbor_weighting::uniform`), the only
+// weighting Chen-Schmitt accepts.
+template <typename NamedParameters>
+bool chen_schmitt_uniform(const NamedParameters& np)
+{
+  if constexpr (!has_parameter<NamedParameters, internal_np::neighbor_weighting_t>()) {
+    (void)np;
+    return false;
+  } else {
+    if (::CGAL::parameters::get_parameter(np, internal_np::neighbor_weighting) != Neighbor_weighting::uniform)
+      throw std::invalid_argument("chen_schmitt_curvatures: neighbor_weighting must be uniform");
+    return true;
+  }
+}
+
+// Euler's formula fitted to the samples by least squares: unweighted (`uniform`)
+// as Chen and Schmitt, else with weights |q_i - p|^2. A sample's error, that of
+// the normal and the cubic remainder, is divided by |q_i - p|: the weights make
+// a sample from a very short edge count as little as it knows. The paper measures
+// the angles from the first edge, and the fit does not depend on that choice of
+// frame. The threshold only refuses directions that are (nearly) not three distinct ones.
+inline bool chen_schmitt_shape_matrix(const std::vector<Normal_curvature_sample>& samples, bool uniform,
+                                      Eigen::Matrix2d& shape)
 {
   Euler_fit fit;
   for (const Normal_curvature_sample& sample : samples)
-    fit.add(sample.direction, sample.curvature);
+    fit.add(sample.direction, sample.curvature, uniform ? 1 : sample.squared_length);
   return fit.solve(1e5, shape);
 }
 
@@ -40,24 +60,32 @@ inline bool chen_schmitt_shape_matrix(const std::vector<Normal_curvature_sample>
 /// every vertex of a surface mesh by Chen and Schmitt's method (Chen and Schmitt
 /// 1992, as reviewed by Chen, Wu and Chi 2005, section 3.1): the normal curvatures
 /// `k_i = 2 <p - q_i, N> / |q_i - p|^2` along the unit
-/// tangents `t_i = (costheta_i, sintheta_i)` towards the neighbors
-/// `q_i` joined to the vertex p by an edge (as in `taubin_curvatures()`) are
-/// fitted by unweighted least squares with Euler's formula
+/// tangents `t_i = (costheta_i, sintheta_i)` towards neighbors `q_i` of the
+/// vertex p are fitted by least squares with Euler's formula
 /// `k(theta) = C_1 cos^2theta + C_2 costheta sintheta + C_3 sin^2theta`;
 /// the principal curvatures and directions are the eigenvalues and eigenvectors
 /// of `[[C_1, C_2/2], [C_2/2, C_3]]` (eqs. 12-13). The angles are measured
 /// in a tangent frame of the normal; the fit does not depend on which (the paper
 /// measures them from the first edge).
 ///
-/// A baseline: not consistent on irregular meshes. Normals come from
-/// `vertex_normal_map` when given, else from `vertex_normal_method` (default
-/// `Vertex_normal_method::quadric_fit`, the package's second-order normal).
+/// The paper's fit, with `neighbor_weighting(Neighbor_weighting::uniform)`, is
+/// unweighted over the neighbors joined to p by an edge (as in `taubin_curvatures()`).
+/// It diverges on meshes with slivers or tiny clusters of vertices (marching cubes
+/// or tetrahedra): a sample's error, the normal's error and the cubic remainder,
+/// is divided by `|q_i - p|`, and some 1-rings are far smaller than the edge length h.
+/// The default fits the samples of every vertex of the 2-ring with weights
+/// `|q_i - p|^2`: it converges at first order on such meshes (measured on
+/// marching tetrahedra and Delaunay triangulations of random points) and at second
+/// order on regular grids, with errors there 2 to 4 times the paper fit's.
+/// Normals come from `vertex_normal_map` when given, else from `vertex_normal_method`
+/// (default `Vertex_normal_method::quadric_fit`, the package's second-order normal).
 ///
 /// **Conventions.** A sphere with outward normals has `max_curvature == min_curvature == 1/r`;
 /// `max_curvature >= min_curvature`; directions are unit, tangent and orthogonal;
-/// K is `max_curvature * min_curvature`. A vertex with no normal, or with fewer
-/// than three neighbor directions distinct modulo pi (for instance a corner of a
-/// grid), gets NaN in every output and the status `Estimation_status::not_estimable`.
+/// K is `max_curvature * min_curvature`. A vertex with no normal, or whose samples
+/// have fewer than three directions distinct modulo pi (for instance, with the
+/// paper's fit, a corner of a grid), gets NaN in every output and the status
+/// `Estimation_status::not_estimable`.
 ///
 /// Only the outputs whose maps are passed are written; passing none does nothing.
 ///
@@ -72,6 +100,12 @@ inline bool chen_schmitt_shape_matrix(const std::vector<Normal_curvature_sample>
 ///   \ceSurfaceInputParameters
 ///   \ceGivenNormalParameter
 ///   \ceQuadricFitNormalParameters
+///   \cgalParamNBegin{neighbor_weighting}
+///     \cgalParamDescription{`Neighbor_weighting::uniform`: the paper's unweighted fit over the 1-ring (other values
+///                           are refused)}
+///     \cgalParamType{`CGAL::Curvature_estimation::Neighbor_weighting`}
+///     \cgalParamDefault{none: the fit over the 2-ring with weights `|q_i - p|^2`}
+///   \cgalParamNEnd
 ///   \ceSurfaceOutputParameters{K = k1 k2, `ok` or `not_estimable`}
 /// \cgalNamedParamsEnd
 ///
@@ -82,10 +116,13 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename NamedParameters = parameters::Default_named_parameters>
 void chen_schmitt_curvatures(const FaceGraph& g, const NamedParameters& np = parameters::default_values())
 {
+  // The paper's 1-ring; by default the 2-ring, so that a vertex whose 1-ring is a
+  // tiny cluster (marching-cubes meshes have them) still has samples of length about h.
+  const bool uniform = internal::chen_schmitt_uniform(np);
   internal::normal_curvature_sample_curvatures<ConcurrencyTag>(
-    g, np, "chen_schmitt_curvatures",
-    [](const std::vector<internal::Normal_curvature_sample>& samples, Eigen::Matrix2d& shape) {
-      return internal::chen_schmitt_shape_matrix(samples, shape);
+    g, np, "chen_schmitt_curvatures", uniform ? 1 : 2,
+    [uniform](const std::vector<internal::Normal_curvature_sample>& samples, Eigen::Matrix2d& shape) {
+      return internal::chen_schmitt_shape_matrix(samples, uniform, shape);
     });
 }
 

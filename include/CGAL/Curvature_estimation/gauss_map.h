@@ -166,7 +166,8 @@ std::shared_ptr<const Vertex_normal_table<FaceGraph>> gauss_map_normals(const Fa
 ///   \cgalParamNBegin{neighbor_weighting}
 ///     \cgalParamDescription{when given, the differential is the paper's average of per-face Jacobians with these
 ///                           weights (`Neighbor_weighting::centroid`: Chen, Wu and Chi's; `Neighbor_weighting::area`:
-///                           the corners' areas) instead of the least-squares fit over the 2-ring}
+///                           the corners' areas) instead of the least-squares fit over the 2-ring;
+///                           `Neighbor_weighting::uniform` is refused}
 ///     \cgalParamType{`CGAL::Curvature_estimation::Neighbor_weighting`}
 ///     \cgalParamDefault{none: the least-squares fit}
 ///   \cgalParamNEnd

@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 
 #include <cmath>
+#include <stdexcept>
 
 #include <vector>
 
@@ -92,7 +93,8 @@ inline bool taubin_shape_matrix(const std::vector<Normal_curvature_sample>& samp
 ///   \ceGivenNormalParameter
 ///   \ceQuadricFitNormalParameters
 ///   \cgalParamNBegin{neighbor_weighting}
-///     \cgalParamDescription{the weights of the neighbors}
+///     \cgalParamDescription{the weights of the neighbors: `Neighbor_weighting::area` or `Neighbor_weighting::centroid`
+///                           (`Neighbor_weighting::uniform` is refused)}
 ///     \cgalParamType{`CGAL::Curvature_estimation::Neighbor_weighting`}
 ///     \cgalParamDefault{`Neighbor_weighting::area` (Taubin's)}
 ///   \cgalParamNEnd
@@ -106,10 +108,13 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename NamedParameters = parameters::Default_named_parameters>
 void taubin_curvatures(const FaceGraph& g, const NamedParameters& np = parameters::default_values())
 {
-  const bool area_weights =
-    internal::parameter_or(np, internal_np::neighbor_weighting, Neighbor_weighting::area) == Neighbor_weighting::area;
+  const Neighbor_weighting weighting =
+    internal::parameter_or(np, internal_np::neighbor_weighting, Neighbor_weighting::area);
+  if (weighting == Neighbor_weighting::uniform)
+    throw std::invalid_argument("taubin_curvatures: neighbor_weighting must be area or centroid");
+  const bool area_weights = weighting == Neighbor_weighting::area;
   internal::normal_curvature_sample_curvatures<ConcurrencyTag>(
-    g, np, "taubin_curvatures",
+    g, np, "taubin_curvatures", 1,
     [area_weights](const std::vector<internal::Normal_curvature_sample>& samples, Eigen::Matrix2d& shape) {
       return internal::taubin_shape_matrix(samples, area_weights, shape);
     });

@@ -20,20 +20,20 @@ namespace internal {
 // for the symmetric second fundamental form S (Euler's theorem, k_n(phi) =
 // k1 cos^2 phi + k2 sin^2 phi, written linearly in S; its eigen-decomposition is
 // the (k1, k2, phi) of the papers, without their case distinctions). Three
-// directions determine S exactly, more by least squares.
+// directions determine S exactly, more by (weighted) least squares.
 class Euler_fit
 {
 public:
-  void add(const Eigen::Vector2d& unit_direction, double normal_curvature)
+  void add(const Eigen::Vector2d& unit_direction, double normal_curvature, double weight = 1)
   {
     const double x = unit_direction.x(), y = unit_direction.y();
     const Eigen::Vector3d row(x * x, 2 * x * y, y * y);
-    normal_matrix_ += row * row.transpose();
-    right_hand_side_ += normal_curvature * row;
+    normal_matrix_ += weight * row * row.transpose();
+    right_hand_side_ += (weight * normal_curvature) * row;
   }
 
   // S, or false when the directions do not determine it: the 2-norm condition
-  // number of the sample rows (the square root of the normal matrix's) exceeds
+  // number of the (weighted) sample rows (the square root of the normal matrix's) exceeds
   // `max_condition`. Three directions 60 degrees apart give about 2; it grows
   // without bound as directions come together modulo pi.
   bool solve(double max_condition, Eigen::Matrix2d& shape) const

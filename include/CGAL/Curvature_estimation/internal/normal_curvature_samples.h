@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Normal-curvature samples at a vertex, the common input of Taubin's tensor and
 // of Chen and Schmitt's Euler fit (Chen, Wu and Chi 2005, section 3):
-// for every neighbor q_i joined to the vertex p by an edge, the unit tangent
-// t_i (the projection of q_i - p on the tangent plane, eq. 9), the normal
-// curvature of the circle through p and q_i tangent to the plane (eq. 10), and
+// for every neighbor q_i joined to the vertex p by an edge (or, on wider rings,
+// every vertex q_i of the k-ring), the unit tangent t_i (the projection of
+// q_i - p on the tangent plane, eq. 9), the normal curvature of the circle
+// through p and q_i tangent to the plane (eq. 10), |q_i - p|^2, and for edges
 // the two candidate weights of the edge (areas and centroid weights of the one
 // or two faces on the edge). Also the vertex loop both baselines share.
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_NORMAL_CURVATURE_SAMPLES_H
@@ -14,6 +15,7 @@
 #include <CGAL/Curvature_estimation/internal/face_average_normal.h>
 #include <CGAL/Curvature_estimation/internal/face_graph_platelet.h>
 #include <CGAL/Curvature_estimation/internal/local_coordinates.h>
+#include <CGAL/Curvature_estimation/internal/neighborhood.h>
 #include <CGAL/Curvature_estimation/internal/shape_matrix_estimate.h>
 #include <CGAL/Curvature_estimation/internal/tangent_frame.h>
 
@@ -27,6 +29,7 @@
 #include <Eigen/Core>
 
 #include <cmath>
+#include <cstddef>
 #include <type_traits>
 #include <vector>
 
@@ -38,8 +41,9 @@ struct Normal_curvature_sample
 {
   Eigen::Vector2d direction;  // unit tangent t_i in the tangent frame
   double curvature;           // k_n(t_i), in coordinates divided by the length scale
-  double area_weight;         // sum of the areas of the faces on the edge (p, q_i)
-  double centroid_weight;     // sum of 1 / |G_f - p|^2 over the faces f on the edge
+  double squared_length;      // |q_i - p|^2 in those coordinates
+  double area_weight;         // sum of the areas of the faces on the edge (p, q_i); 0 beyond the 1-ring
+  double centroid_weight;     // sum of 1 / |G_f - p|^2 over the faces f on the edge; 0 beyond the 1-ring
 };
 
 // Gathers the samples of one vertex; allocation-free once `samples` has grown.
@@ -54,40 +58,60 @@ public:
 
   Normal_curvature_sampler(const FaceGraph& g, VertexPointMap vpm) : local_(g, vpm) {}
 
-  // Fills `samples` at `v` for the unit `normal` and its tangent frame; returns the
-  // length scale of the coordinates (the mean distance from v to its neighbors),
-  // or 0 when v is isolated or its point or all its neighbors are unusable.
-  // Curvatures are positive where the neighbor lies below the tangent plane
-  // (the package's convention: 1/r on a sphere with outward normals).
-  double sample(vertex_descriptor v, const Eigen::Vector3d& normal, const Tangent_frame& tangents,
+  // Fills `samples` at `v` for the unit `normal` and its tangent frame: with
+  // `rings == 1` one sample per edge (p, q_i), with face weights; wider, one per
+  // vertex of the k-ring, without. Returns the length scale of the coordinates
+  // (the mean distance from v to its neighbors), or 0 when v is isolated or its
+  // point or all its neighbors are unusable. Curvatures are positive where the
+  // neighbor lies below the tangent plane (the package's convention: 1/r on a
+  // sphere with outward normals).
+  double sample(vertex_descriptor v, const Eigen::Vector3d& normal, const Tangent_frame& tangents, int rings,
                 std::vector<Normal_curvature_sample>& samples)
   {
     samples.clear();
     if (!local_.center_on(v))
       return 0;
     const FaceGraph& g = local_.graph();
-    for (halfedge_descriptor h : halfedges_around_target(v, g)) {
-      const Eigen::Vector3d d = local_(source(h, g));
-      const double d2 = d.squaredNorm();
-      if (!d.allFinite() || !(d2 > 0))
-        continue;
-      Eigen::Vector2d t = tangents.transpose() * d;
-      const double t_norm = t.norm();
-      if (!(t_norm > 0))
-        continue;
-      Normal_curvature_sample s;
-      s.direction = t / t_norm;
-      s.curvature = -2 * normal.dot(d) / d2;
-      s.area_weight = 0;
-      s.centroid_weight = 0;
-      add_face_weights(face(h, g), s);
-      add_face_weights(face(opposite(h, g), g), s);
-      samples.push_back(s);
+    if (rings == 1) {
+      for (halfedge_descriptor h : halfedges_around_target(v, g))
+        if (add_sample(local_(source(h, g)), normal, tangents, samples)) {
+          add_face_weights(face(h, g), samples.back());
+          add_face_weights(face(opposite(h, g), g), samples.back());
+        }
+    } else {
+      rings_.start(v, g);
+      for (int r = 1; r < rings; ++r)
+        if (!rings_.extend(g))
+          break;
+      for (std::size_t i = 1; i < rings_.vertices().size(); ++i)
+        add_sample(local_(rings_.vertices()[i]), normal, tangents, samples);
     }
     return local_.scale();
   }
 
 private:
+  // Appends the sample of the offset d = q_i - p, without face weights; false
+  // (nothing appended) where d is not finite, zero or along the normal.
+  static bool add_sample(const Eigen::Vector3d& d, const Eigen::Vector3d& normal, const Tangent_frame& tangents,
+                         std::vector<Normal_curvature_sample>& samples)
+  {
+    const double d2 = d.squaredNorm();
+    if (!d.allFinite() || !(d2 > 0))
+      return false;
+    const Eigen::Vector2d t = tangents.transpose() * d;
+    const double t_norm = t.norm();
+    if (!(t_norm > 0))
+      return false;
+    Normal_curvature_sample s;
+    s.direction = t / t_norm;
+    s.curvature = -2 * normal.dot(d) / d2;
+    s.squared_length = d2;
+    s.area_weight = 0;
+    s.centroid_weight = 0;
+    samples.push_back(s);
+    return true;
+  }
+
   // Area and centroid weight of face f (any polygon: Newell's area, the mean of
   // the vertices), in the scaled coordinates; degenerate or non-finite faces add nothing.
   void add_face_weights(face_descriptor f, Normal_curvature_sample& s) const
@@ -105,11 +129,12 @@ private:
   }
 
   Vertex_local_coordinates<FaceGraph, VertexPointMap> local_;
+  Ring_collector<FaceGraph> rings_;
 };
 
 // The local estimator of the estimators built on normal-curvature samples:
-// `solve(samples, shape)` turns the samples of a vertex into its shape matrix
-// (false: not estimable). The normal is the given one, else estimated by `method`.
+// `solve(samples, shape)` turns the samples of the vertex's `rings`-ring into its
+// shape matrix (false: not estimable). The normal is the given one, else estimated by `method`.
 template <typename FaceGraph, typename VertexPointMap, typename Solve>
 struct Normal_curvature_sample_estimator
 {
@@ -118,6 +143,7 @@ struct Normal_curvature_sample_estimator
   Platelet_fitter<FaceGraph, VertexPointMap> fitter;
   Normal_curvature_sampler<FaceGraph, VertexPointMap> sampler;
   Vertex_normal_method method;
+  int rings;
   Solve solve;
   std::vector<Normal_curvature_sample> samples;
 
@@ -132,7 +158,7 @@ struct Normal_curvature_sample_estimator
       return Surface_estimate();
     }
     const Tangent_frame tangents = tangent_basis<3>(normal);
-    const double scale = sampler.sample(v, normal, tangents, samples);
+    const double scale = sampler.sample(v, normal, tangents, rings, samples);
     Eigen::Matrix2d shape;
     if (!(scale > 0) || !solve(samples, shape))
       return Surface_estimate();
@@ -141,9 +167,10 @@ struct Normal_curvature_sample_estimator
 };
 
 // Taubin's and Chen and Schmitt's estimators, which differ by `solve` (see
-// Normal_curvature_sample_estimator); `caller` names the public function in errors.
+// Normal_curvature_sample_estimator) and by the `rings` they sample; `caller`
+// names the public function in errors.
 template <typename ConcurrencyTag, typename FaceGraph, typename NamedParameters, typename Solve>
-void normal_curvature_sample_curvatures(const FaceGraph& g, const NamedParameters& np, const char* caller,
+void normal_curvature_sample_curvatures(const FaceGraph& g, const NamedParameters& np, const char* caller, int rings,
                                         Solve solve)
 {
   const Fit_parameters fit = fit_parameters(np, caller);
@@ -151,7 +178,7 @@ void normal_curvature_sample_curvatures(const FaceGraph& g, const NamedParameter
     using VPM = std::decay_t<decltype(vpm)>;
     return Normal_curvature_sample_estimator<FaceGraph, VPM, Solve>{Platelet_fitter<FaceGraph, VPM>(g, vpm, fit.settings),
                                                                     Normal_curvature_sampler<FaceGraph, VPM>(g, vpm),
-                                                                    fit.normal_method, solve, {}};
+                                                                    fit.normal_method, rings, solve, {}};
   });
 }
 
