@@ -22,6 +22,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -487,15 +488,16 @@ TEST(Curve_network, RegularAndJitteredTorusNextToTheParaboloidFit)
     const Estimates n2 = estimate(mesh, params::extrapolation_order(2));
     const Estimates circle = estimate(mesh, params::curve_model(Curve_model::circle));
     const Estimates hamann = estimate(mesh, params::default_values(), true);
-    for (const Estimates* e : {&n1, &n2, &circle})
+    const Estimates paper = estimate(mesh, params::max_curve_irregularity(std::numeric_limits<double>::infinity()));
+    for (const Estimates* e : {&n1, &n2, &circle, &paper})
       for (std::size_t i = 0; i < e->status.size(); ++i) {
         ASSERT_NE(e->status[i], Estimation_status::not_estimable) << i;
         ASSERT_TRUE(std::isfinite(e->mean[i]) && std::isfinite(e->gaussian[i])) << i;
       }
-    const char* names[4] = {"curve network n=1 Bezier", "curve network n=2", "curve network n=1 circle",
-                            "paraboloid fit"};
-    const Estimates* all[4] = {&n1, &n2, &circle, &hamann};
-    for (int k = 0; k < 4; ++k) {
+    const char* names[5] = {"curve network n=1 Bezier", "curve network n=2", "curve network n=1 circle",
+                            "paraboloid fit", "Wollmann (no line test)"};
+    const Estimates* all[5] = {&n1, &n2, &circle, &hamann, &paper};
+    for (int k = 0; k < 5; ++k) {
       const Errors t = errors(*all[k], exact, {});
       std::printf("torus 80x40 jitter %.1f, %-25s RMS H %.3e K %.3e k_max %.3e k_min %.3e\n", jitter, names[k],
                   t.mean.stats().rms, t.gaussian.stats().rms, t.k_max.stats().rms, t.k_min.stats().rms);
@@ -531,6 +533,114 @@ TEST(Curve_network, IrregularDelaunayMeshHasAStatusAndAFiniteValueEverywhere)
               ok, fallbacks, t.mean.stats().rms, t.gaussian.stats().rms, p.mean.stats().rms, p.gaussian.stats().rms);
 }
 
+// The curves' irregularity (curve_network.h): s^2 for uneven steps and tan^2(delta/2) for a kink,
+// the relative errors of the Bezier's normal curvature to leading order, checked against it.
+TEST(Curve_network, IrregularityIsTheLeadingRelativeErrorOfTheCurve)
+{
+  // The paraboloid z = (x^2 + y^2) / 2, normal curvature 1 in every direction at the origin.
+  auto point = [](double x, double y) { return Eigen::Vector3d(x, y, (x * x + y * y) / 2); };
+  const Eigen::Vector3d up(0, 0, 1);
+  struct Case { double h_a, h_b, kink; };
+  for (const Case& c : {Case{1e-3, 1e-3, 0.0}, Case{1.5e-3, 0.5e-3, 0.0}, Case{1.2e-3, 0.8e-3, 0.0},
+                        Case{1e-3, 1e-3, 0.2}, Case{1e-3, 1e-3, 0.4}}) {
+    const Eigen::Vector3d a = point(-c.h_a * std::cos(c.kink / 2), -c.h_a * std::sin(c.kink / 2));
+    const Eigen::Vector3d b = point(c.h_b * std::cos(c.kink / 2), -c.h_b * std::sin(c.kink / 2));
+    const CEI::Curve_estimate e = CEI::extrapolated_curve_curvature(&a, Eigen::Vector3d::Zero(), &b, 1);
+    const double relative_error = std::abs(CEI::meusnier_normal_curvature(e.curvature_vector, -up) - 1);
+    const double irregularity = CEI::curve_irregularity(a, b, -std::cos(c.kink));
+    EXPECT_NEAR(relative_error, irregularity, 1e-5) << c.h_a << ' ' << c.h_b << ' ' << c.kink;
+  }
+}
+
+// Whether the curves through a vertex are mesh lines (irregularity at most max_curve_irregularity,
+// 0.04 by default), on a grid of the hyperboloid z = 0.4 (x^2 - y^2) over [-0.5, 0.5]^2 (slopes at
+// most 0.4) jittered by 0.15 of its step. Where Wollmann's method (max_curve_irregularity(infinity))
+// has no curve network (boundary vertices, a few interior ones), both fall back. At the other
+// vertices (valence 6) whose three pairs of neighbors three apart around them are more nearly
+// opposite than any other pair (all but a few; at those only the values are checked), these pairs
+// are the curves, and the test recomputes their largest irregularity: the vertex is `fallback`
+// exactly where it is above 0.04, with the default paraboloid fit's values, and elsewhere `ok` with
+// the values of Wollmann's method. On the regular grids of Hamann's nine functions no interior
+// vertex falls back.
+TEST(Curve_network, FallbackExactlyWhereTheCurvesAreNoMeshLines)
+{
+  const ce_test::Graph_function f = ce_test::hamann_table1_functions()[4];  // the hyperboloid
+  const ce_test::Soup soup = ce_test::jittered_grid_graph_soup(f, 41, -0.5, 0.5, 0.15, 7);
+  const Mesh mesh = ce_test::to_mesh<Mesh>(soup);
+  const Estimates e = estimate(mesh);
+  const Estimates paper = estimate(mesh, params::max_curve_irregularity(std::numeric_limits<double>::infinity()));
+  const Estimates hamann = estimate(mesh, params::default_values(), true);
+  auto expect_same = [](const Estimates& x, const Estimates& y, std::size_t i) {
+    EXPECT_EQ(x.mean[i], y.mean[i]) << i;
+    EXPECT_EQ(x.gaussian[i], y.gaussian[i]) << i;
+    EXPECT_EQ(std::memcmp(&x.principal[i], &y.principal[i], sizeof(Curvatures)), 0) << i;
+  };
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  std::size_t interior = 0, mesh_lines = 0, not_mesh_lines = 0, ambiguous = 0;
+  std::size_t i = 0;
+  for (Mesh::Vertex_index v : vertices(mesh)) {
+    if (!CGAL::is_border(v, mesh))
+      ++interior;
+    if (paper.status[i] == Estimation_status::fallback) {  // no curve network: boundary, too few pairs, Euler
+      EXPECT_EQ(e.status[i], Estimation_status::fallback) << i;
+      expect_same(e, hamann, i++);
+      continue;
+    }
+    ASSERT_EQ(paper.status[i], Estimation_status::ok) << i;
+    const Eigen::Vector3d center = CEI::point_in_double(vpm, v);
+    Eigen::Vector3d normal = CEI::face_average_normal(v, mesh, vpm, CE::Vertex_normal_method::area_weighted);
+    normal.normalize();
+    std::vector<Eigen::Vector3d> offsets, directions;
+    for (Mesh::Halfedge_index h : halfedges_around_target(halfedge(v, mesh), mesh)) {
+      offsets.push_back(CEI::point_in_double(vpm, source(h, mesh)) - center);
+      const Eigen::Vector3d d = offsets.back() - offsets.back().dot(normal) * normal;
+      directions.push_back(d / d.norm());
+    }
+    ASSERT_EQ(offsets.size(), 6u) << i;
+    // The greedy pairing takes the three pairs three apart if they are more nearly opposite
+    // than any other pair.
+    double irregularity = 0, least_opposite = -1, most_opposite_other = 1;
+    for (std::size_t k = 0; k < 6; ++k)
+      for (std::size_t l = k + 1; l < 6; ++l) {
+        const double cosine = directions[k].dot(directions[l]);
+        if (l == k + 3) {
+          least_opposite = std::max(least_opposite, cosine);
+          irregularity = std::max(irregularity, CEI::curve_irregularity(offsets[k], offsets[l], cosine));
+        } else {
+          most_opposite_other = std::min(most_opposite_other, cosine);
+        }
+      }
+    const bool other_pairs = !(least_opposite < most_opposite_other);
+    if (other_pairs) {
+      ++ambiguous;
+      expect_same(e, e.status[i] == Estimation_status::ok ? paper : hamann, i);
+    } else if (irregularity <= CEI::default_max_curve_irregularity) {
+      ++mesh_lines;
+      EXPECT_EQ(e.status[i], Estimation_status::ok) << i;
+      expect_same(e, paper, i);
+    } else {
+      ++not_mesh_lines;
+      EXPECT_EQ(e.status[i], Estimation_status::fallback) << i;
+      expect_same(e, hamann, i);
+    }
+    ++i;
+  }
+  std::printf("grid 41x41 jittered by 0.15: of %zu interior vertices %zu keep their curves, %zu (%.1f%%) fall back, "
+              "%zu have other pairs as nearly opposite\n",
+              interior, mesh_lines, not_mesh_lines, 100.0 * not_mesh_lines / interior, ambiguous);
+  EXPECT_GT(mesh_lines, interior / 4);
+  EXPECT_GT(not_mesh_lines, interior / 10);
+  EXPECT_LT(ambiguous, interior / 20);
+
+  for (const ce_test::Graph_function& g : ce_test::hamann_table1_functions()) {
+    const Mesh grid = ce_test::to_mesh<Mesh>(ce_test::grid_graph_soup(g, 21));
+    const Estimates r = estimate(grid);
+    std::size_t k = 0;
+    for (Mesh::Vertex_index v : vertices(grid))
+      EXPECT_EQ(r.status[k++] == Estimation_status::fallback, bool(CGAL::is_border(v, grid))) << g.name << ' ' << k;
+  }
+}
+
 TEST(Curve_network, BadInputAndParameters)
 {
   auto [mesh, isolated, broken] = ce_test::grid_with_isolated_and_nan_vertex<Mesh>();
@@ -544,6 +654,9 @@ TEST(Curve_network, BadInputAndParameters)
   EXPECT_THROW(estimate(mesh, params::extrapolation_order(0)), std::invalid_argument);
   EXPECT_THROW(estimate(mesh, params::extrapolation_order(5)), std::invalid_argument);
   EXPECT_THROW(estimate(mesh, params::extrapolation_order(2).curve_model(Curve_model::circle)), std::invalid_argument);
+  EXPECT_THROW(estimate(mesh, params::max_curve_irregularity(-1)), std::invalid_argument);
+  EXPECT_THROW(estimate(mesh, params::max_curve_irregularity(std::numeric_limits<double>::quiet_NaN())),
+               std::invalid_argument);
 }
 
 TEST(Curve_network, GivenExactNormalsAreUsed)

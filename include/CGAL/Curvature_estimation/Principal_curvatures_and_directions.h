@@ -64,7 +64,8 @@ enum class Estimation_status : unsigned char
                  ///< was too small or ill-conditioned (or because wider rings were asked for)
   not_estimable, ///< no estimate: isolated vertex, degenerate neighborhood, invalid input; values are NaN
   fallback       ///< estimated by the estimator's documented fallback method, because its own method
-                 ///< does not apply at the vertex (`curve_network_curvatures()`: no curve network there)
+                 ///< does not apply at the vertex (`curve_network_curvatures()`: no curve network there, or
+                 ///< its curves are no mesh lines)
 };
 
 /// The name of a status: `ok`, `widened`, `not_estimable` or `fallback`.

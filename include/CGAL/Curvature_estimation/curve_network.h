@@ -62,6 +62,42 @@ namespace internal {
 // grids and Delaunay meshes, raise the RMS error of K by two orders of magnitude.
 constexpr double curve_pair_max_cosine = -0.866;
 
+// Whether a curve a - p - b is a mesh line the method can use. With a = p - h_a u_a + O(h^2),
+// b = p + h_b u_b + O(h^2) (u_a, u_b unit tangent directions, <u_a, u_b> = cos(delta), delta the
+// kink) and kappa_a, kappa_b the normal curvatures in the directions of a and b, the Bezier's
+// central differences d1 = b - a, d2 = 4 (a + b - 2p) give, through Meusnier's theorem, to leading
+// order in h
+//   kappa_est = 2 [h_a^2 kappa_a + h_b^2 kappa_b - (h_b^2 - h_a^2)(h_b^2 kappa_b - h_a^2 kappa_a) / L^2] / L^2,
+//   L^2 = |b - a|^2 = h_a^2 + h_b^2 + 2 h_a h_b cos(delta):
+// on a straight line with uneven steps, kappa (1 - s^2) with s = (h_a - h_b) / (h_a + h_b) (the
+// first-order terms of the two sides no longer cancel); with even steps and a kink, the mean of
+// kappa_a and kappa_b times 1 + tan^2(delta / 2), and a kink also mixes two directions (and,
+// through the normal's error, the geodesic curvature). The circle model has no s^2 term but a
+// first-order one of size s h kappa'. Both relative errors are O(1): they vanish under refinement
+// only if s and delta do, as on a parameter grid of a smooth surface, where they are O(h), and not
+// on meshes without mesh lines (Delaunay triangulations of scattered points, marching cubes or
+// tetrahedra), where the curve network is order 0. The curve's irregularity
+//   s^2 + tan^2(delta / 2) = s^2 + (1 + c) / (1 - c),  c = <u_a, u_b> = -cos(delta),
+// bounds the magnitude of both leading relative errors; `a` and `b` are the neighbors' offsets
+// from p, `cosine` the cosine of their angle in the tangent plane (at most
+// curve_pair_max_cosine, so the division is safe).
+inline double curve_irregularity(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double cosine)
+{
+  const double length_a = a.norm(), length_b = b.norm();
+  const double s = (length_a - length_b) / (length_a + length_b);
+  return s * s + (1 + cosine) / (1 - cosine);
+}
+
+// Default of `max_curve_irregularity`: a vertex with a curve of higher irregularity falls back.
+// Measured: the largest irregularity on the parameter grids of the tests is 0.012 (the 40 x 20
+// torus grid; it is O(h), 0.003 at 80 x 40) and on icospheres 0.031 (next to the valence-5
+// vertices, at every level); 0.04 keeps all of these. On marching-tetrahedra meshes the median is
+// 0.25 and on Delaunay meshes of random points 0.11: 0.04 keeps about 9% and 4% of their vertices,
+// whose error is bounded by 4% of the normal curvatures, not by h (RMS of H about 2e-2 at 20, 40 and
+// 80 cells, where the paraboloid fit's falls from 3e-2 to 1e-2), so that the estimate converges
+// there through its fallback, and 0.05 already brings the ellipsoid's order down to 0.5.
+constexpr double default_max_curve_irregularity = 0.04;
+
 // The estimator at one vertex; one copy per thread (buffers reused, no allocation
 // per vertex once warmed up).
 template <typename FaceGraph, typename VertexPointMap>
@@ -71,8 +107,10 @@ public:
   using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<FaceGraph>::halfedge_descriptor;
 
-  Curve_network_estimator(const FaceGraph& g, VertexPointMap vpm, Curve_model model, int order)
-    : g_(&g), vpm_(vpm), model_(model), order_(order), fallback_(g, vpm, Platelet_fit_settings())
+  Curve_network_estimator(const FaceGraph& g, VertexPointMap vpm, Curve_model model, int order,
+                          double max_irregularity)
+    : g_(&g), vpm_(vpm), model_(model), order_(order), max_irregularity_(max_irregularity),
+      fallback_(g, vpm, Platelet_fit_settings())
   {}
 
   // The estimate at `v`; `given_normal` is the user's normal (any length), or
@@ -102,7 +140,7 @@ public:
     }
 
     pair_neighbors(orientation);
-    if (pairs_.size() < 3)
+    if (pairs_.size() < 3 || !curves_are_mesh_lines())
       return fall_back(v, given_normal, given);
 
     // One curve per pair, at the highest order the mesh lines allow up to order_.
@@ -138,7 +176,7 @@ public:
   }
 
 private:
-  // Fewer than three curves, or no normal, or an ill-conditioned Euler system:
+  // Fewer than three curves, a curve that is no mesh line, no normal, or an ill-conditioned Euler system:
   // Hamann's paraboloid fit over the 1-ring (widened as it needs), with the same
   // normal if one was given and the package's default quadric-fit normal otherwise.
   Surface_estimate fall_back(vertex_descriptor v, const Eigen::Vector3d* given_normal, const Eigen::Vector3d& given)
@@ -210,6 +248,16 @@ private:
       }
   }
 
+  // Every curve of pairs_ has an irregularity of at most max_irregularity_.
+  bool curves_are_mesh_lines() const
+  {
+    for (const std::pair<std::size_t, std::size_t>& pair : pairs_)
+      if (!(curve_irregularity(offsets_[pair.first], offsets_[pair.second],
+                               directions_[pair.first].dot(directions_[pair.second])) <= max_irregularity_))
+        return false;
+    return true;
+  }
+
   // The neighbor of `at` straight across from `from`: the third of its six
   // neighbors counted around it from `from`, if `at` is an interior vertex of
   // valence 6 (of a grid triangulation, the next vertex on the grid line).
@@ -272,6 +320,7 @@ private:
   VertexPointMap vpm_;
   Curve_model model_;
   int order_;
+  double max_irregularity_;
   Platelet_fitter<FaceGraph, VertexPointMap> fallback_;
   Eigen::Vector3d center_ = Eigen::Vector3d::Zero();
   double scale_ = 1;
@@ -331,12 +380,26 @@ private:
 /// the requested order. `Estimation_status::widened`: some curve had to use a lower
 /// order (only possible for n > 1, within n - 1 rings of the boundary or of a vertex
 /// of valence other than 6). `Estimation_status::fallback`: the curve network does
-/// not exist at the vertex:
+/// not exist at the vertex, or its curves are no mesh lines:
 /// fewer than three pairs of opposite neighbors (boundary vertices; interior
 /// vertices of valence 5 or less; on irregular meshes, every vertex without three
-/// pairs of neighbors at least 150 degrees apart), no normal
-/// from the tangents, or directions too close for Euler's system (condition number
-/// above 20); the estimate is then Hamann's paraboloid fit
+/// pairs of neighbors at least 150 degrees apart); a curve whose irregularity
+/// s^2 + tan^2(delta/2) is above `max_curve_irregularity` (0.04), with
+/// s = (|a - p| - |b - p|) / (|a - p| + |b - p|) the asymmetry of its two edges and
+/// delta its kink in the tangent plane (the deviation from 180 degrees); no normal
+/// from the tangents; or directions too close for Euler's system (condition number
+/// above 20). The irregularity is the size of the curve estimate's leading relative
+/// error (a factor 1 - s^2 from the uneven steps, 1 + tan^2(delta/2) from the kink),
+/// which does not vanish under refinement unless s and delta do: on parameter grids
+/// of smooth surfaces they are O(h) (at most 0.012 on the grids of the tests, 0.031
+/// on icospheres), on marching-cubes or marching-tetrahedra meshes and Delaunay
+/// triangulations of scattered points they are not (median 0.25 and 0.11), and
+/// there the curve network without this test does not converge (order 0, errors of
+/// H up to 400 at slivers, for curvatures of order 1). With the test about 90% of the
+/// vertices of such meshes and 65% of those of grids jittered by 0.2 of the step
+/// fall back, and the estimate converges, mostly as the fallback's: do not use the
+/// curve network on such meshes. In every case of
+/// `fallback` the estimate is Hamann's paraboloid fit
 /// (`paraboloid_fitting_curvatures()` with its defaults and the given normal if
 /// any), which widens its neighborhood as it needs. `Estimation_status::not_estimable`:
 /// isolated vertex, non-finite point, all neighbors coincident, or the fallback
@@ -377,11 +440,20 @@ private:
 ///     \cgalParamType{`int`, from 1 to 4}
 ///     \cgalParamDefault{`1`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{max_curve_irregularity}
+///     \cgalParamDescription{a vertex falls back to the paraboloid fit if one of its curves has an
+///                           irregularity s^2 + tan^2(delta/2) above this (see "Status and fallback");
+///                           `std::numeric_limits<double>::infinity()` gives Wollmann's method at every
+///                           vertex with three curves}
+///     \cgalParamType{`double`, at least 0}
+///     \cgalParamDefault{`0.04`}
+///   \cgalParamNEnd
 ///   \ceSurfaceOutputParameters{K = k1 k2, see "Status and fallback" above}
 /// \cgalNamedParamsEnd
 ///
 /// \throws std::invalid_argument if `extrapolation_order` is not in 1..4, or is
-///         greater than 1 with `Curve_model::circle`, or if `ball_radius` is given
+///         greater than 1 with `Curve_model::circle`, if `max_curve_irregularity` is
+///         negative or NaN, or if `ball_radius` is given
 ///         (neighborhoods are set in rings).
 template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename FaceGraph,
@@ -398,9 +470,14 @@ void curve_network_curvatures(const FaceGraph& g,
   if (order > 1 && model != Curve_model::bezier)
     throw std::invalid_argument(
       "curve_network_curvatures: extrapolation_order greater than 1 requires Curve_model::bezier");
+  const double max_irregularity = internal::parameter_or(np, internal_np::max_curve_irregularity,
+                                                         internal::default_max_curve_irregularity);
+  if (!(max_irregularity >= 0))
+    throw std::invalid_argument("curve_network_curvatures: max_curve_irregularity must be at least 0");
 
   internal::estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
-    return internal::Curve_network_estimator<FaceGraph, std::decay_t<decltype(vpm)>>(g, vpm, model, order);
+    return internal::Curve_network_estimator<FaceGraph, std::decay_t<decltype(vpm)>>(g, vpm, model, order,
+                                                                                       max_irregularity);
   });
 }
 

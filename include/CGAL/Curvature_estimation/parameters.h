@@ -43,6 +43,7 @@
   X(neighbor_weighting_t, neighbor_weighting)                                         \
   X(curve_model_t, curve_model)                                                       \
   X(extrapolation_order_t, extrapolation_order)                                       \
+  X(max_curve_irregularity_t, max_curve_irregularity)                                 \
   X(jet_degree_t, jet_degree)                                                         \
   X(monge_degree_t, monge_degree)
 #define CGAL_CE_PACKAGE_PARAMETERS(X)        \
