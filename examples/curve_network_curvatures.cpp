@@ -65,7 +65,8 @@ int main(int argc, char** argv)
   std::cout << "mesh: " << path << " (" << num_vertices(mesh) << " vertices)\n"
             << "estimator: curve network (Wollmann), Bezier curves, extrapolation order " << order << '\n'
             << "curve network at the requested order: " << ok
-            << ", lower order: " << widened << ", paraboloid-fit fallback (no curve network, or no mesh lines): " << fallback
+            << ", lower order: " << widened
+            << ", paraboloid-fit fallback (no curve network, or no mesh lines): " << fallback
             << ", not estimable: " << failed << '\n';
   if (!H.empty())
     std::cout << "median H " << H[H.size() / 2] << ", median K " << K[K.size() / 2] << '\n';
