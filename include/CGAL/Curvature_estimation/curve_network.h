@@ -5,6 +5,7 @@
 #define CGAL_CURVATURE_ESTIMATION_CURVE_NETWORK_H
 
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
+#include <CGAL/Curvature_estimation/paraboloid_fitting.h>
 #include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/Vertex_normal_method.h>
 #include <CGAL/Curvature_estimation/internal/curve_curvature.h>
@@ -110,7 +111,7 @@ public:
   Curve_network_estimator(const FaceGraph& g, VertexPointMap vpm, Curve_model model, int order,
                           double max_irregularity)
     : g_(&g), vpm_(vpm), model_(model), order_(order), max_irregularity_(max_irregularity),
-      fallback_(g, vpm, Platelet_fit_settings())
+      fallback_(g, vpm, Fit_parameters{Platelet_fit_settings(), Vertex_normal_method::quadric_fit})
   {}
 
   // The estimate at `v`; `given_normal` is the user's normal (any length), or
@@ -177,15 +178,11 @@ public:
 
 private:
   // Fewer than three curves, a curve that is no mesh line, no normal, or an ill-conditioned Euler system:
-  // Hamann's paraboloid fit over the 1-ring (widened as it needs), with the same
-  // normal if one was given and the package's default quadric-fit normal otherwise.
+  // paraboloid_fitting_curvatures() with its defaults (its own fallback included), with the same
+  // normal if one was given.
   Surface_estimate fall_back(vertex_descriptor v, const Eigen::Vector3d* given_normal, const Eigen::Vector3d& given)
   {
-    Surface_estimate result =
-      given_normal != nullptr ? fallback_.fit(v, given) : fallback_.fit(v, Vertex_normal_method::quadric_fit);
-    if (result.status != Estimation_status::not_estimable)
-      result.status = Estimation_status::fallback;
-    return result;
+    return as_fallback(fallback_.estimate(v, given_normal != nullptr ? &given : nullptr));
   }
 
   // The distinct neighbors of `v` with finite points, in the order of the
@@ -321,7 +318,7 @@ private:
   Curve_model model_;
   int order_;
   double max_irregularity_;
-  Platelet_fitter<FaceGraph, VertexPointMap> fallback_;
+  Paraboloid_estimator<FaceGraph, VertexPointMap> fallback_;
   Eigen::Vector3d center_ = Eigen::Vector3d::Zero();
   double scale_ = 1;
   std::vector<vertex_descriptor> ring_;
@@ -401,7 +398,8 @@ private:
 /// curve network on such meshes. In every case of
 /// `fallback` the estimate is Hamann's paraboloid fit
 /// (`paraboloid_fitting_curvatures()` with its defaults and the given normal if
-/// any), which widens its neighborhood as it needs. `Estimation_status::not_estimable`:
+/// any), which widens its neighborhood as it needs and has a fallback of its own
+/// (the Gauss map, without a given normal). `Estimation_status::not_estimable`:
 /// isolated vertex, non-finite point, all neighbors coincident, or the fallback
 /// failed too; every output is NaN.
 ///
