@@ -407,7 +407,7 @@ def targets_section(speed, quick):
                   "300 x 300 grid counts about 4,100 instructions per vertex: the normal fit 1,600, "
                   "gathering the 1-ring 1,190, Hamann's fit 975, output 340 (counted before interior "
                   "vertices kept the linear terms in the curvature fit, a 5-unknown fit in place of "
-                  "Hamann's 3-unknown one, which costs about 20% more time). In this run the same fit "
+                  "Hamann's 3-unknown one, which costs about 20%% more time). In this run the same fit "
                   "takes %s ns with area-weighted normals and %s ns with given normals; the reference "
                   "figure of 95 ns is for area normals. At this machine's 2.1 GHz, 60 ns is 126 cycles: "
                   "4,100 instructions in 126 cycles would take 33 instructions per cycle, so meeting it "
