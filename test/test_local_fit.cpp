@@ -2,7 +2,8 @@
 // Tests of the numerical core shared by the paraboloid-fitting estimators, on
 // exact inputs and without any mesh:
 //   internal/tangent_frame.h   tangent_basis<N>
-//   internal/quadric_fit.h     Taylor_fit<D, FirstOrder, LastOrder>, both conditioning tests
+//   internal/quadric_fit.h     Taylor_fit<D, FirstOrder, LastOrder>, both conditioning tests,
+//                              solve_again, curvature_quartic
 //   internal/shape_operator.h  graph_curvature<N>
 //
 // Every expected value is computed here from the mathematics of the input
@@ -1470,6 +1471,91 @@ void check_zero_weight(Random& random)
     // ... and differs from the unweighted fit of noisy data.
     EXPECT_GT((doubled.hessian() - without.hessian()).cwiseAbs().maxCoeff(), 1e-6);
   }
+}
+
+// ---------------------------------------------------------------------------
+// Solving again with other heights; the curvature's own quartic term
+// ---------------------------------------------------------------------------
+
+// solve_again with other heights gives the fit of those heights, whether the first
+// solve was accepted by test (a) (a round stencil) or only by test (b) (one
+// stretched by 100): it must reuse the inverse in the coordinates it was accepted in.
+template <int D, int F, int L>
+void check_solve_again(Random& random, Orders<D, F, L>)
+{
+  using Fit = CEI::Taylor_fit<D, F, L>;
+  const double max_condition = L == 3 ? 1e6 : 1e3;
+  for (int trial = 0; trial < 10; ++trial)
+    for (const double stretch : {1.0, 100.0}) {
+      const std::vector<Vec<D>> xs =
+        mapped<D>(spread_stencil<D>(random, 2 * Fit::tested + trial % 6), stretch_map<D>(random, stretch));
+      Samples<D> first, second;
+      for (const Vec<D>& x : xs) {
+        first.push(x, random.uniform(-1, 1));
+        second.push(x, random.uniform(-1, 1));
+      }
+      Fit again, fresh;
+      first([&](const Vec<D>& x, double h, double w) { again.add(x, h, w); });
+      second([&](const Vec<D>& x, double h, double w) { fresh.add(x, h, w); });
+      if (stretch == 1.0) {
+        ASSERT_TRUE(again.solve(max_condition)) << "trial " << trial;
+        ASSERT_TRUE(fresh.solve(max_condition)) << "trial " << trial;
+      } else {
+        ASSERT_FALSE(again.solve(max_condition)) << "trial " << trial;
+        ASSERT_TRUE(again.solve_whitened(max_condition, first)) << "trial " << trial;
+        ASSERT_TRUE(fresh.solve_whitened(max_condition, second)) << "trial " << trial;
+      }
+      const Mat<D, D> first_hessian = again.hessian();
+      again.solve_again(second);
+      const double size = (std::max)(fresh.hessian().cwiseAbs().maxCoeff(), fresh.gradient().cwiseAbs().maxCoeff());
+      EXPECT_LE((again.hessian() - fresh.hessian()).cwiseAbs().maxCoeff(), 1e-13 * size) << "trial " << trial;
+      EXPECT_LE((again.gradient() - fresh.gradient()).cwiseAbs().maxCoeff(), 1e-13 * size) << "trial " << trial;
+      // Other heights, another fit: the test could tell.
+      EXPECT_GT((first_hessian - fresh.hessian()).cwiseAbs().maxCoeff(), 1e-6 * size) << "trial " << trial;
+    }
+}
+
+TEST(SolveAgain, IsTheFitOfTheOtherHeightsInScaledAndWhitenedCoordinates)
+{
+  Random random(91);
+  for_each_fit([&](auto orders) { check_solve_again(random, orders); });
+}
+
+// The height over the tangent space of a sphere of radius r (k = D) or of a
+// cylinder over a sphere of dimension k < D, normal pointing out: -(r - sqrt(r^2 -
+// |P x|^2)) = -|P x|^2 / 2r - |P x|^4 / 8r^3 - |P x|^6 / 16r^5 - ..., P the
+// orthogonal projection onto k random directions, Hessian C = -P / r. Its
+// quartic part is curvature_quartic(C, x); the rest is of order 6.
+template <int D>
+void check_curvature_quartic(Random& random)
+{
+  for (int trial = 0; trial < 20; ++trial) {
+    const int k = 1 + trial % D;  // the sphere's dimension: k = D is a sphere, k < D a cylinder
+    const double r = random.uniform(0.5, 2.0);
+    const Mat<D, D> q = random.rotation<D>();
+    const Mat<D, D> projection = q.leftCols(k) * q.leftCols(k).transpose();
+    const Mat<D, D> hessian = -projection / r;
+    const Vec<D> direction = random.in_cube<D>().normalized();
+    const double rho = (projection * direction).norm();
+    for (const double s : {0.1, 0.05}) {
+      const Vec<D> x = s * direction;
+      const double height = -(r - std::sqrt(r * r - (projection * x).squaredNorm()));
+      const double quartic = height - 0.5 * x.dot(hessian * x);
+      const double sixth = std::pow(s * rho, 6) / (16 * std::pow(r, 5));
+      // The eighth-order term is at most 5 rho^2 / 8 r^2 < 3% of the sixth; 1e-14: rounding.
+      EXPECT_NEAR(quartic - CEI::curvature_quartic<D>(hessian, x), -sixth, 0.1 * sixth + 1e-14)
+        << "trial " << trial << ", k " << k << ", s " << s;
+      // ... where the quartic part itself is |P x|^4 / 8r^3, far larger.
+      EXPECT_NEAR(quartic, -std::pow(s * rho, 4) / (8 * std::pow(r, 3)), 2 * sixth + 1e-14) << "trial " << trial;
+    }
+  }
+}
+
+TEST(CurvatureQuartic, IsTheQuarticPartOfTheHeightOfSpheresAndCylinders)
+{
+  Random random(92);
+  check_curvature_quartic<2>(random);
+  check_curvature_quartic<3>(random);
 }
 
 TEST(Weights, ZeroWeightIsTheSameAsLeavingTheSampleOut)

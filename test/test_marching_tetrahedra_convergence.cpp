@@ -72,10 +72,13 @@ const std::vector<Estimator>& estimators()
   return all;
 }
 
-// The H errors of one estimator on one mesh, over the vertices it estimated, and how many it did not.
+// The H errors of one estimator on one mesh, over the vertices it estimated, and how many it did not;
+// the same over its vertices of status fallback, and the largest error relative to the largest
+// principal curvature over the others (its own estimates).
 struct Level_errors
 {
-  ce_test::Error_stats H;
+  ce_test::Error_stats H, H_fallback;
+  double own_relative_max = 0;
   std::size_t not_estimated = 0;
 };
 
@@ -121,14 +124,23 @@ std::vector<Row> measure(const ce_test::Implicit_surface& surface)
       if (l >= rows[e].measured_levels)
         continue;
       const Estimates est = estimators()[e].run(mesh);
-      ce_test::Error_accumulator H;
+      ce_test::Error_accumulator H, H_fallback;
+      Level_errors& errors = rows[e].level[l];
       for (std::size_t i = 0; i < exact.size(); ++i) {
-        if (std::isfinite(est.mean[i]))
-          H.add(exact[i].H, est.mean[i]);
+        if (!std::isfinite(est.mean[i])) {
+          ++errors.not_estimated;
+          continue;
+        }
+        H.add(exact[i].H, est.mean[i]);
+        if (est.status[i] == CE::Estimation_status::fallback)
+          H_fallback.add(exact[i].H, est.mean[i]);
         else
-          ++rows[e].level[l].not_estimated;
+          errors.own_relative_max =
+            (std::max)(errors.own_relative_max, std::abs(est.mean[i] - exact[i].H) /
+                                                  (std::max)(std::abs(exact[i].k_max), std::abs(exact[i].k_min)));
       }
-      rows[e].level[l].H = H.stats();
+      errors.H = H.stats();
+      errors.H_fallback = H_fallback.stats();
       rows[e].h[l] = h;
     }
   }
@@ -178,6 +190,35 @@ void expect_gauss_map_converges(const std::vector<Row>& rows)
     }
 }
 
+// The curve network cannot converge on these meshes by construction: a curve a - p - b whose edges
+// are uneven or kinked (irregularity s^2 + tan^2(delta/2), see curve_network.h) has a relative error of
+// about its irregularity, which does not fall with h. It says so per vertex: about 91% of the vertices
+// here have such a curve and are status fallback, with the paraboloid fit's values, whose RMS converges at
+// order 0.5 at least (measured 0.98 to 1.04); the others keep their curves (irregularity at most 0.04),
+// with an error bounded by a fraction of the curvature rather than by h: the irregularity's 4% plus the
+// three-point curve's own O(h) error, measured at most 5.4% of the largest principal curvature, asserted
+// at most 10%. Their share keeps the whole at order 0.26 to 0.69 (printed), and lower as h shrinks.
+void expect_curve_network_says_where_it_falls_back(const std::vector<Row>& rows)
+{
+  for (const Row& r : rows)
+    if (r.estimator == "curve_network") {
+      SCOPED_TRACE(r.surface + ", " + r.estimator);
+      const std::size_t f = n_levels - 1;
+      const double order = ce_test::observed_order(r.level[f - 1].H_fallback.rms, r.level[f].H_fallback.rms,
+                                                   r.h[f - 1], r.h[f]);
+      std::printf("%-9s curve network: fallback vertices' H RMS", r.surface.c_str());
+      for (std::size_t l = 0; l < n_levels; ++l) std::printf(" %.3e (%zu)", r.level[l].H_fallback.rms, r.level[l].H_fallback.count);
+      std::printf(", order %.2f; own estimates' largest |H error| / max |k|", order);
+      for (std::size_t l = 0; l < n_levels; ++l) std::printf(" %.3f", r.level[l].own_relative_max);
+      std::printf("\n");
+      for (std::size_t l = 0; l < n_levels; ++l) {
+        EXPECT_EQ(r.level[l].not_estimated, 0u);
+        EXPECT_LE(r.level[l].own_relative_max, 0.1) << levels[l] << " cells";
+      }
+      EXPECT_GE(order, 0.5);
+    }
+}
+
 // The estimators that converge on this family: the paraboloid fit, jet fitting (degree 2) and the
 // Gauss map at first order, jet fitting of degree 4 at third order, the curve network at order 0.5 (about
 // 90% of its vertices are the paraboloid fit's, status fallback: their curves are no mesh lines) and
@@ -188,32 +229,37 @@ void expect_gauss_map_converges(const std::vector<Row>& rows)
 void expect_convergent_ones_converge(const std::vector<Row>& rows)
 {
   expect_converges(rows, "paraboloid_fitting", 0.5, false);
-  expect_converges(rows, "curve_network", 0.5, true);
   expect_converges(rows, "jet_fitting", 0.5, true);
   expect_converges(rows, "jet_fitting d4 3 rings", 2.0, true);
   expect_converges(rows, "chen_schmitt", 0.5, true);
   expect_gauss_map_converges(rows);
+  expect_curve_network_says_where_it_falls_back(rows);
 }
 
-// The default paraboloid fit has no outliers where jet fitting (its defaults) has none: at the
-// finest level its H RMS and maximum error are at most 5% above jet fitting's. (At 40 cells the
-// ellipsoid's maximum is 1.15 times jet's, printed above; the fit without linear terms, before,
-// had maxima 2 to 4 times jet's at 80 cells.)
+// The row of `estimator`, or nullptr.
+const Row* find_row(const std::vector<Row>& rows, const std::string& estimator)
+{
+  for (const Row& r : rows)
+    if (r.estimator == estimator)
+      return &r;
+  return nullptr;
+}
+
+// The default paraboloid fit has no outliers where jet fitting (its defaults) has none: at every
+// level its H RMS and maximum error are at most 5% above jet fitting's. Measured: RMS 0.42 to 0.57
+// times jet's, maxima 0.23 to 0.75 times. Before the widened fit took the cubic terms, the vertices
+// whose 1-ring has near-coincident neighbors (three directions left) were fitted by a paraboloid over
+// the 2-ring, and the torus at 20 cells had 1.35 times jet's RMS and 1.7 times its maximum.
 void expect_paraboloid_no_worse_than_jet(const std::vector<Row>& rows)
 {
-  const Row* paraboloid = nullptr;
-  const Row* jet = nullptr;
-  for (const Row& r : rows) {
-    if (r.estimator == "paraboloid_fitting")
-      paraboloid = &r;
-    if (r.estimator == "jet_fitting")
-      jet = &r;
-  }
+  const Row* paraboloid = find_row(rows, "paraboloid_fitting");
+  const Row* jet = find_row(rows, "jet_fitting");
   ASSERT_TRUE(paraboloid != nullptr && jet != nullptr);
-  const std::size_t finest = n_levels - 1;
   SCOPED_TRACE(paraboloid->surface);
-  EXPECT_LE(paraboloid->level[finest].H.rms, 1.05 * jet->level[finest].H.rms);
-  EXPECT_LE(paraboloid->level[finest].H.max, 1.05 * jet->level[finest].H.max);
+  for (std::size_t l = 0; l < n_levels; ++l) {
+    EXPECT_LE(paraboloid->level[l].H.rms, 1.05 * jet->level[l].H.rms) << levels[l] << " cells";
+    EXPECT_LE(paraboloid->level[l].H.max, 1.05 * jet->level[l].H.max) << levels[l] << " cells";
+  }
 }
 
 TEST(MarchingTetrahedraConvergence, Ellipsoid)

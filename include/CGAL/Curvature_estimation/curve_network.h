@@ -94,9 +94,9 @@ inline double curve_irregularity(const Eigen::Vector3d& a, const Eigen::Vector3d
 // torus grid; it is O(h), 0.003 at 80 x 40) and on icospheres 0.031 (next to the valence-5
 // vertices, at every level); 0.04 keeps all of these. On marching-tetrahedra meshes the median is
 // 0.25 and on Delaunay meshes of random points 0.11: 0.04 keeps about 9% and 4% of their vertices,
-// whose error is bounded by 4% of the normal curvatures, not by h (RMS of H about 2e-2 at 20, 40 and
-// 80 cells, where the paraboloid fit's falls from 3e-2 to 1e-2), so that the estimate converges
-// there through its fallback, and 0.05 already brings the ellipsoid's order down to 0.5.
+// whose error is bounded by a fraction of the curvature (at most 5.4% measured), not by h, while the
+// others converge through the fallback: no fixed threshold makes the estimate converge on such meshes
+// (see the manual), and lower ones would send the icospheres' vertices next to valence 5 to it.
 constexpr double default_max_curve_irregularity = 0.04;
 
 // The estimator at one vertex; one copy per thread (buffers reused, no allocation

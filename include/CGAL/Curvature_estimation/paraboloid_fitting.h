@@ -90,7 +90,20 @@ private:
 /// `MarchingTetrahedraConvergence`) this lowers the largest H error from 0.50 to
 /// 0.087 (ellipsoid), from 0.41 to 0.13 (torus) and from 0.51 to 0.11 (blobs), below
 /// `jet_fitting_curvatures()`'s 0.13, 0.20 and 0.16; on Delaunay meshes of random points
-/// it lowers it 3 to 9 times. Where the linear terms are not determined on any ring,
+/// it lowers it 3 to 9 times. That fit is then solved again with the heights less the
+/// quartic term that its own curvatures imply, (x^T C x) |C x|^2 / 8 for the Hessian C
+/// (the whole quartic part of a sphere's or a cylinder's height, which a degree-2 fit
+/// otherwise takes into C as an O(h^2) error): on spheres and cylinders the error is
+/// then O(h^4) (H errors below 1e-8 on the Delaunay test meshes, where jet fitting's
+/// are 1e-5 to 1e-4), and elsewhere the leading error is unchanged. Where that fit is
+/// ill-conditioned on the starting rings, it is widened with cubic terms too
+/// (Gaussian weights of width the mean 1-ring edge), since a paraboloid over a wider
+/// neighborhood has an error growing as the square of its radius; this happens at
+/// the vertices of marching-cubes meshes whose nearly coincident neighbors leave a
+/// 1-ring of three directions. On the marching-tetrahedra and Delaunay test meshes the
+/// H error is then below jet fitting's at every level, in RMS and maximum (tests
+/// `MarchingTetrahedraConvergence`, `DelaunayAgainstJetFitting`).
+/// Where the linear terms are not determined on any ring,
 /// and at boundary vertices (whose cubic normal is accurate enough that Hamann's
 /// fit does better there), the paraboloid is fitted without them.
 /// `area_weighted`, `angle_weighted` and `centroid_weighted` use the face average as

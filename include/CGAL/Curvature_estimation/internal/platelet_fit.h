@@ -84,10 +84,10 @@ public:
   // at an interior vertex, the curvature fit keeps the linear terms: the normal's
   // remaining error then tilts the fitted gradient instead of leaking, through an
   // uneven stencil, into the curvatures (on marching-tetrahedra and Delaunay meshes
-  // Hamann's fit had maximum errors 3 to 9 times larger). Where the linear terms
-  // are not determined on any ring, and at boundary vertices (whose one-sided
-  // stencils make them less accurate than Hamann's fit in the cubic normal's
-  // frame), Hamann's fit.
+  // Hamann's fit had maximum errors 3 to 9 times larger). See fit_curvature for its
+  // widening and its quartic term. Where the linear terms are not determined on any
+  // ring, and at boundary vertices (whose one-sided stencils make them less
+  // accurate than Hamann's fit in the cubic normal's frame), Hamann's fit.
   Estimate fit(Vertex v, Vertex_normal_method method)
   {
     Vector normal;
@@ -279,18 +279,56 @@ private:
   }
 
   // The curvature fit in the frame of `normal`: Hamann's paraboloid by default, or
-  // a Taylor fit with linear terms (Fit = Taylor_fit<D, 1, 2>).
+  // a Taylor fit with linear terms (Fit = Taylor_fit<D, 1, 2>), which:
+  //  - where test (a) refuses the starting rings, is widened with the cubic terms
+  //    too (weighted as the cubic normal fit, see cubic_normal_min_rings) before it
+  //    is widened as it is: a degree-2 fit over a wider neighborhood has an error
+  //    that grows as the square of its radius, and the cubic terms take out the
+  //    first order of it. On marching-tetrahedra meshes, whose vertices with
+  //    near-coincident neighbors (a 1-ring of three directions) are widened, this
+  //    lowers the largest H error 2 to 4 times (test MarchingTetrahedraConvergence);
+  //  - on surfaces, is fitted again with the heights less the curvature's own
+  //    quartic term (quadric_fit.h), which makes it of fourth order on spheres and
+  //    cylinders. Not on hypersurfaces: they are the graphs of trivariate fields,
+  //    whose natural exact case is a quadratic field, which the fit is exact on at
+  //    its interior vertices and the correction, made for spheres, would not be.
+  // Hamann's fit stays the paper's.
   template <typename Fit = Taylor_fit<D, 2, 2>>
   Estimate fit_curvature(const Vector& normal)
   {
     const Tangents tangents = tangent_basis<N>(normal);
-    Fit fit;
     const int first = curvature_rings_ != 0 ? (std::min)(curvature_rings_, settings_.max_rings) : start_rings();
+    Fit fit;
+    if constexpr (Fit::linear_terms) {
+      if (fit_widening(normal, tangents, first, first, settings_.max_condition, fit) != 0)
+        return curvature_estimate(normal, tangents, first, fit);
+      Taylor_fit<D, 1, 3> cubic;
+      const int rings = fit_widening(normal, tangents, first + 1, settings_.max_rings,
+                                     cubic_normal_condition_factor * settings_.max_condition, cubic);
+      if (rings != 0)
+        return curvature_estimate(normal, tangents, rings, cubic);
+    }
     int rings = fit_widening(normal, tangents, first, settings_.max_rings, settings_.max_condition, fit);
     if (rings == 0)
       rings = fit_whitened(normal, tangents, first, settings_.max_rings, settings_.max_condition, fit);
     if (rings == 0)
       return Estimate();
+    return curvature_estimate(normal, tangents, rings, fit);
+  }
+
+  // The estimate from an accepted fit over `rings` rings; on surfaces, a fit with
+  // linear terms is first solved again without the curvature's quartic term.
+  template <typename Fit>
+  Estimate curvature_estimate(const Vector& normal, const Tangents& tangents, int rings, Fit& fit) const
+  {
+    if constexpr (D == 2 && Fit::linear_terms) {
+      const Eigen::Matrix<double, D, D> first_hessian = fit.hessian();
+      fit.solve_again([&](const auto& add) {
+        for_each_sample<Fit>(normal, tangents, rings, [&](const auto& x, double height, double weight) {
+          add(x, height - curvature_quartic<D>(first_hessian, x), weight);
+        });
+      });
+    }
     const Graph_curvature<N> curvature = graph_curvature<N>(fit.hessian(), fit.gradient(), tangents, normal);
     if (!all_finite(curvature.curvatures) || !all_finite(curvature.directions))
       return Estimate();

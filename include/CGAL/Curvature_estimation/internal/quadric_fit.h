@@ -55,6 +55,22 @@
 // polynomial is the same function of the point): solve_whitened computes it in y
 // and maps it back, a_x = T^T a_y, i.e. g = W^T g_y and C = W^T C_y W.
 //
+// A fit can be solved again on the same samples with other heights (solve_again): only the right-hand side changes, and the inverse of the
+// normal matrix, in the coordinates where it was accepted, is kept for that.
+//
+// The curvature's own quartic term. For a surface in Monge form at p, principal
+// curvatures k1, k2 along x and y, the quartic part of the height is
+//   1/8 (k1^3 x^4 + k1 k2 (k1 + k2) x^2 y^2 + k2^3 y^4)
+// plus terms in the derivatives of the principal curvatures; on a sphere and a
+// cylinder (constant principal curvatures) it is all of it (r - sqrt(r^2 - x^2)
+// = x^2 / 2r + x^4 / 8r^3 + ...). In any frame and dimension that part is
+//   curvature_quartic(C, x) = (x^T C x) |C x|^2 / 8,   C the Hessian of the height.
+// A degree-2 (or 3) fit takes the quartic part, through an uneven stencil, into
+// C: an O(h^2) error, which on spheres and cylinders (the surfaces CAD meshes are
+// made of) is all the error. Fitting again with the heights less
+// curvature_quartic(C, x), C from the first fit, removes it: the error of C in it
+// is O(h^2) (or O(h)), times |x|^4 / |x|^2, hence of higher order.
+//
 // The estimators (platelet_fit.h) try (a) on each neighborhood up to the widest,
 // and (b) on the widest where (a) accepts none: where (a) accepts, the fit and
 // its rounding are those of the scaled coordinates, as without (b); (a) is also
@@ -101,6 +117,7 @@ class Taylor_fit
   static constexpr int cubic = LastOrder == 3 ? number_of_monomials(D, 3) : 0;
 
 public:
+  static constexpr bool linear_terms = FirstOrder == 1;
   static constexpr int unknowns = (FirstOrder == 1 ? D : 0) + quadratic + cubic;
   // The monomials of orders 1..LastOrder, those of test (b): the fit's own ones
   // first (quadratic, [linear,] [cubic]), then for Hamann's fit the linear ones.
@@ -139,10 +156,10 @@ public:
     condition_ = std::numeric_limits<double>::infinity();
     if (size_ < unknowns)
       return false;
-    double inverse[packed];
-    if (!conditioned_inverse<unknowns>(max_condition, inverse, condition_))
+    if (!conditioned_inverse<unknowns>(max_condition, inverse_, condition_))
       return false;
-    solve_with(inverse);
+    whitened_ = false;
+    solve_with(inverse_);
     return true;
   }
 
@@ -178,16 +195,34 @@ public:
     if (!conditioned_inverse<tested>(max_condition, whitened_inverse, whitened_condition_))
       return false;
     // The fit's own block is a prefix of N_y; its inverse where it is not all of N_y.
-    double inverse[packed];
     if constexpr (unknowns == tested)
-      std::copy(whitened_inverse, whitened_inverse + packed, inverse);
-    else if (!invert<unknowns>(normal_matrix_, inverse))
+      std::copy(whitened_inverse, whitened_inverse + packed, inverse_);
+    else if (!invert<unknowns>(normal_matrix_, inverse_))
       return false;
-    solve_with(inverse);
-    // h(x) = g_y . (W x) + 1/2 (W x)^T C_y (W x)
-    hessian_ = W.transpose() * hessian_ * W;
-    gradient_ = W.transpose() * gradient_;
+    whitened_ = true;
+    whitening_ = W;
+    solve_with(inverse_);
+    map_back();
     return true;
+  }
+
+  // The fit again after an accepted solve or solve_whitened, on the same samples
+  // with other heights: `samples(add)` calls add(x, height, weight) for each (any
+  // order). Only the right-hand side is accumulated; the inverse is the last one.
+  template <typename Samples>
+  void solve_again(const Samples& samples)
+  {
+    std::fill(right_hand_side_, right_hand_side_ + unknowns, 0.0);
+    samples([&](const Point& x, double height, double weight) {
+      double row[tested];
+      monomials(whitened_ ? Point(whitening_ * x) : x, row);
+      CGAL_CURVATURE_ESTIMATION_UNROLL
+      for (int i = 0; i < unknowns; ++i)
+        right_hand_side_[i] += weight * height * row[i];
+    });
+    solve_with(inverse_);
+    if (whitened_)
+      map_back();
   }
 
   // The condition numbers of tests (a) and (b) at the last solve and solve_whitened (infinity where not computed).
@@ -294,6 +329,14 @@ private:
     return M.trace() * W.squaredNorm() <= max_whitening_condition;  // tr(M^-1) = |W|_F^2
   }
 
+  // From the coefficients of y = W x to those of x:
+  // h(x) = g_y . (W x) + 1/2 (W x)^T C_y (W x).
+  void map_back()
+  {
+    hessian_ = whitening_.transpose() * hessian_ * whitening_;
+    gradient_ = whitening_.transpose() * gradient_;
+  }
+
   // Zeroes the first n entries of the normal matrix (the own block, or all of
   // it), the right-hand side and the count.
   template <int n>
@@ -314,6 +357,23 @@ private:
   void accumulate(const Point& x, double height, double weight)
   {
     double row[tested];
+    monomials(x, row);
+    // The lower triangle only, row by row: the matrix is symmetric.
+    CGAL_CURVATURE_ESTIMATION_UNROLL
+    for (int i = 0, k = 0; i < n; ++i) {
+      const double weighted = weight * row[i];
+      CGAL_CURVATURE_ESTIMATION_UNROLL
+      for (int j = 0; j <= i; ++j)
+        normal_matrix_[k++] += weighted * row[j];
+      if (i < unknowns)
+        right_hand_side_[i] += weight * height * row[i];
+    }
+    ++size_;
+  }
+
+  // The row of the monomials of x: the fit's own, then the other tested ones.
+  static void monomials(const Point& x, double (&row)[tested])
+  {
     int column = 0;
     // Each order's monomials are scaled to be orthonormal coordinates of the
     // symmetric tensor x (x) ... (x) x (sqrt of the multiplicity), so that a
@@ -338,21 +398,10 @@ private:
           CGAL_CURVATURE_ESTIMATION_UNROLL
           for (int k = j; k < D; ++k)
             row[column++] = sqrt_multiplicity(i, j, k) * x[i] * x[j] * x[k];
-    if constexpr (FirstOrder == 2 && n > unknowns)
+    if constexpr (FirstOrder == 2)
       CGAL_CURVATURE_ESTIMATION_UNROLL
       for (int i = 0; i < D; ++i)
         row[column++] = x[i];
-    // The lower triangle only, row by row: the matrix is symmetric.
-    CGAL_CURVATURE_ESTIMATION_UNROLL
-    for (int i = 0, k = 0; i < n; ++i) {
-      const double weighted = weight * row[i];
-      CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int j = 0; j <= i; ++j)
-        normal_matrix_[k++] += weighted * row[j];
-      if (i < unknowns)
-        right_hand_side_[i] += weight * height * row[i];
-    }
-    ++size_;
   }
 
   // The largest column sum of absolute values of the leading n x n block of a packed symmetric matrix.
@@ -428,12 +477,24 @@ private:
 
   double normal_matrix_[tested_packed];  // add fills the own block, a prefix; solve_whitened all of it
   double right_hand_side_[unknowns];
+  double inverse_[packed];  // of the own block, at the last accepted solve or solve_whitened
+  bool whitened_ = false;   // whether that was solve_whitened, in the coordinates whitening_ x
+  Hessian whitening_ = Hessian::Identity();
   int size_ = 0;
   double condition_ = std::numeric_limits<double>::infinity();
   double whitened_condition_ = std::numeric_limits<double>::infinity();
   Hessian hessian_ = Hessian::Zero();
   Point gradient_ = Point::Zero();
 };
+
+// The quartic part of the height that the Hessian C implies by itself (see the
+// header comment): (x^T C x) |C x|^2 / 8.
+template <int D>
+double curvature_quartic(const Eigen::Matrix<double, D, D>& C, const Eigen::Matrix<double, D, 1>& x)
+{
+  const Eigen::Matrix<double, D, 1> Cx = C * x;
+  return x.dot(Cx) * Cx.squaredNorm() / 8;
+}
 
 } // namespace internal
 } // namespace Curvature_estimation
