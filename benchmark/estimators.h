@@ -39,6 +39,8 @@ enum class Estimator
   paraboloid,                // default (quadric-fit) normals
   paraboloid_area_normals,   // area-weighted face-average normals
   paraboloid_given_normals,  // normals passed in a vertex_normal_map
+  paraboloid_d3,             // fit_degree(3): cubic Taylor fit over 2 rings
+  paraboloid_d4,             // fit_degree(4): quartic Taylor fit over 3 rings
   curve_network_1,           // extrapolation_order(1): O(h^2)
   curve_network_2,           // extrapolation_order(2): O(h^4) on parameter grids
   gauss_map,
@@ -81,6 +83,8 @@ inline const std::vector<Estimator_info>& estimators()
     {Estimator::paraboloid, "paraboloid", "paraboloid (default normals)"},
     {Estimator::paraboloid_area_normals, "paraboloid_area_normals", "paraboloid (area normals)"},
     {Estimator::paraboloid_given_normals, "paraboloid_given_normals", "paraboloid (given normals)"},
+    {Estimator::paraboloid_d3, "paraboloid_d3", "paraboloid, fit degree 3"},
+    {Estimator::paraboloid_d4, "paraboloid_d4", "paraboloid, fit degree 4"},
     {Estimator::curve_network_1, "curve_network_1", "curve network O(h^2)"},
     {Estimator::curve_network_2, "curve_network_2", "curve network O(h^4)"},
     {Estimator::gauss_map, "gauss_map", "Gauss map"},
@@ -157,6 +161,12 @@ void run(Estimator e, const Mesh& mesh, Normal_map given_normals, double h, cons
       return;
     case Estimator::paraboloid_given_normals:
       CE::paraboloid_fitting_curvatures<ConcurrencyTag>(mesh, np.vertex_normal_map(given_normals));
+      return;
+    case Estimator::paraboloid_d3:
+      CE::paraboloid_fitting_curvatures<ConcurrencyTag>(mesh, np.fit_degree(3));
+      return;
+    case Estimator::paraboloid_d4:
+      CE::paraboloid_fitting_curvatures<ConcurrencyTag>(mesh, np.fit_degree(4));
       return;
     case Estimator::curve_network_1:
       CE::curve_network_curvatures<ConcurrencyTag>(mesh, np.extrapolation_order(1));

@@ -40,6 +40,8 @@ ALL_ESTIMATORS = [
     ("paraboloid", "paraboloid (default normals)"),
     ("paraboloid_area_normals", "paraboloid (area normals)"),
     ("paraboloid_given_normals", "paraboloid (given normals)"),
+    ("paraboloid_d3", "paraboloid, fit degree 3"),
+    ("paraboloid_d4", "paraboloid, fit degree 4"),
     ("curve_network_1", "curve network O(h^2)"),
     ("curve_network_2", "curve network O(h^4)"),
     ("gauss_map", "Gauss map"),
@@ -74,15 +76,15 @@ def select_estimators(speed, rows):
 
 
 def style(e):
-    """Line style of estimator e, the same in every plot: tab10 has 10 colours for our 8
-    estimators and CGAL's 3 jets (the 11th is black), CGAL 6's estimators take Dark2's;
-    the jets are also dashed, CGAL 6's dash-dotted, and every line has its own marker."""
+    """Line style of estimator e, the same in every plot: tab20 has 20 colours for our 10
+    estimators and CGAL's 3 jets, CGAL 6's estimators take Dark2's; the jets are also
+    dashed, CGAL 6's dash-dotted, and every line has its own marker."""
     i = [name for name, _ in ALL_ESTIMATORS].index(e)
     if e in CGAL6:
         color = plt.get_cmap("Dark2")([name for name, _ in ALL_ESTIMATORS if name in CGAL6].index(e))
     else:
-        color = "k" if i == 10 else plt.get_cmap("tab10")(i)
-    return {"color": color, "marker": "os^vD<>pPX*hH8d+x"[i],
+        color = plt.get_cmap("tab20")(i)
+    return {"color": color, "marker": "os^vD<>pPX*hH8d+x1234"[i],
             "ls": "--" if e.startswith("jet") else "-." if e in CGAL6 else "-"}
 
 

@@ -24,6 +24,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <optional>
 #include <vector>
 
 namespace {
@@ -306,19 +307,50 @@ TEST(Hypersurface_paraboloid_fitting, TrigonometricFunctionConvergesAtSecondOrde
   }
 }
 
-// f4 on a jittered 9^3 grid: small, irregular, with boundary.
-Grid small_jittered_grid(const Function& fn)
+// An n^3 grid whose interior points are moved by up to `jitter` in each coordinate.
+Grid jittered_grid(int n, const Function& fn, double jitter)
 {
-  Grid g = make_grid(9, fn);
+  Grid g = make_grid(n, fn);
   CGAL::Random random(7);
   for (std::size_t v = 0; v < g.domain.size(); ++v)
     if (g.interior[v]) {
       Eigen::Vector3d& p = g.domain[v];
       for (int c = 0; c < 3; ++c)
-        p[c] += random.get_double(-0.04, 0.04);
+        p[c] += random.get_double(-jitter, jitter);
       g.mesh.points[v] = {p.x(), p.y(), p.z(), fn.f(p)};
     }
   return g;
+}
+
+// f4 on a jittered 9^3 grid: small, irregular, with boundary.
+Grid small_jittered_grid(const Function& fn) { return jittered_grid(9, fn, 0.04); }
+
+// fit_degree(3): the cubic Taylor fit with linear terms over 2 rings, the same core as for
+// surfaces. On grids whose interior points are moved by up to 0.3 of the step, its interior
+// H RMS converges at second order, where Hamann's fit (with its default normal) is of first.
+TEST(Hypersurface_paraboloid_fitting, FitDegreeThreeConvergesAtSecondOrderOnJitteredGrids)
+{
+  const Function fn = table_functions()[5];
+  const int sizes[3] = {9, 13, 19};
+  for (const int degree : {2, 3}) {
+    ce_test::Convergence H;
+    for (const int n : sizes) {
+      const double step = 2.0 / (n - 1);
+      const Grid g = jittered_grid(n, fn, 0.3 * step);
+      const Result r = run<CGAL::Parallel_if_available_tag>(g.mesh, CE::parameters::fit_degree(degree));
+      const Rms e = rms_errors(g, fn, r);
+      EXPECT_EQ(e.failed, 0u) << "degree " << degree << ", n " << n;
+      const std::optional<double> order = H.add(step, e.H_interior);
+      std::printf("fit_degree(%d), jittered %2d^3: interior H RMS %.3e K RMS %.3e", degree, n, e.H_interior,
+                  e.K_interior);
+      if (order)
+        std::printf(", order %.2f", *order);
+      std::printf("\n");
+      if (order && degree == 3 && n == sizes[2]) {
+        EXPECT_GE(*order, 1.8);
+      }
+    }
+  }
 }
 
 TEST(Hypersurface_paraboloid_fitting, DirectionsAreUnitTangentOrthogonalAndSorted)

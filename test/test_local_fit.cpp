@@ -591,17 +591,22 @@ void check_gradient_fit(std::uint32_t seed, double tolerance)
   double worst = 0;
   for (int trial = 0; trial < 60; ++trial) {
     constexpr int unknowns = CEI::Taylor_fit<2, 1, L>::unknowns;
-    static_assert(unknowns == (L == 2 ? 5 : 9), "2 gradient + 3 Hessian [+ 4 cubic] unknowns");
+    static_assert(unknowns == (L == 2 ? 5 : L == 3 ? 9 : 14), "2 gradient + 3 Hessian [+ 4 cubic [+ 5 quartic]] unknowns");
     const int m = unknowns + 2 + trial % 10;
     const Mat<2, 2> c = symmetric_from<2>(separated_eigenvalues<2>(random, -3, 3, 0.2), rotation2(random.uniform(0, pi)));
     const Vec<2> g = random.in_cube<2>();
     std::array<double, 4> e{}; // cubic coefficients of x^3, x^2 y, x y^2, y^3
-    if (L == 3)
+    std::array<double, 5> f{}; // quartic coefficients of x^4, x^3 y, x^2 y^2, x y^3, y^4
+    if (L >= 3)
       for (double& coefficient : e)
+        coefficient = random.uniform(-2, 2);
+    if (L == 4)
+      for (double& coefficient : f)
         coefficient = random.uniform(-2, 2);
     const auto height = [&](const Vec<2>& x) {
       const double u = x[0], v = x[1];
-      return g.dot(x) + 0.5 * x.dot(c * x) + e[0] * u * u * u + e[1] * u * u * v + e[2] * u * v * v + e[3] * v * v * v;
+      return g.dot(x) + 0.5 * x.dot(c * x) + e[0] * u * u * u + e[1] * u * u * v + e[2] * u * v * v + e[3] * v * v * v +
+             f[0] * u * u * u * u + f[1] * u * u * u * v + f[2] * u * u * v * v + f[3] * u * v * v * v + f[4] * v * v * v * v;
     };
     const std::vector<Vec<2>> xs = spread_stencil_2d(random, m, 0.3, 1.0);
     const Frame<3> frame = test_frame<3>(random, trial);
@@ -609,7 +614,7 @@ void check_gradient_fit(std::uint32_t seed, double tolerance)
     const Mat<3, 2> t = CEI::tangent_basis<3>(n);
     CEI::Taylor_fit<2, 1, L> fit;
     add_samples(fit, xs, height, frame, t);
-    ASSERT_TRUE(fit.solve(1e5)) << "trial " << trial << ", condition " << fit.condition_number();
+    ASSERT_TRUE(fit.solve(L == 4 ? 1e8 : 1e5)) << "trial " << trial << ", condition " << fit.condition_number();
 
     const Mat<2, 2> q = t.transpose() * frame.tangents();
     const Vec<2> expected_gradient = q * g;
@@ -623,7 +628,7 @@ void check_gradient_fit(std::uint32_t seed, double tolerance)
     // compute them in the fit's frame, with the exact coefficients).
     const CEI::Graph_curvature<3> gc = CEI::graph_curvature<3>(fit.hessian(), fit.gradient(), t, n);
     const Exact_graph_curvature exact = exact_graph_curvature(expected_hessian, expected_gradient, t, n);
-    check_graph_curvature(gc, exact, 10 * tolerance, L == 2 ? "Taylor_fit<2,1,2>" : "Taylor_fit<2,1,3>", trial);
+    check_graph_curvature(gc, exact, 10 * tolerance, L == 2 ? "Taylor_fit<2,1,2>" : L == 3 ? "Taylor_fit<2,1,3>" : "Taylor_fit<2,1,4>", trial);
     // ... and the normal is (n - T g) / l, which in the original frame is R (-g, 1) / l.
     Vec<3> upward;
     upward << -g, 1;
@@ -635,6 +640,8 @@ void check_gradient_fit(std::uint32_t seed, double tolerance)
 TEST(GradientFit, QuadraticRecoversGradientHessianAndCurvatures) { check_gradient_fit<2>(41, 1e-12); }
 
 TEST(GradientFit, CubicRecoversGradientHessianAndCurvatures) { check_gradient_fit<3>(42, 1e-11); }
+
+TEST(GradientFit, QuarticRecoversGradientHessianAndCurvatures) { check_gradient_fit<4>(44, 1e-9); }
 
 TEST(GradientFit, SlopedPlaneGivesZeroCurvature)
 {

@@ -3,7 +3,8 @@
 // smooth closed surfaces (test/common/marching_tetrahedra.h: slivers, uneven valence, vertices on
 // the exact surface) at 20, 40 and 80 cells per axis: the RMS and the maximum of |H - H_exact|
 // over the vertices estimated, how many were not, and the observed orders between the two finest
-// levels, printed for all; asserted for the estimators that converge on these meshes. The reference,
+// levels, printed for all; asserted for the estimators that converge on these meshes (and for the
+// paraboloid fit's fit_degree(3) and fit_degree(4), at orders 1.8 and 2.6). The reference,
 // jet fitting of degree 4 on 3 rings, runs on the two coarser levels only (it costs ten times the others).
 #include <CGAL/Curvature_estimation/chen_schmitt.h>
 #include <CGAL/Curvature_estimation/curve_network.h>
@@ -60,6 +61,10 @@ const std::vector<Estimator>& estimators()
   static const std::vector<Estimator> all = {
       estimator("paraboloid_fitting", [](const Mesh& m, const auto& np) { CE::paraboloid_fitting_curvatures(m, np); },
                 defaults),
+      estimator("paraboloid d3", [](const Mesh& m, const auto& np) { CE::paraboloid_fitting_curvatures(m, np); },
+                params::fit_degree(3)),
+      estimator("paraboloid d4", [](const Mesh& m, const auto& np) { CE::paraboloid_fitting_curvatures(m, np); },
+                params::fit_degree(4)),
       estimator("curve_network", [](const Mesh& m, const auto& np) { CE::curve_network_curvatures(m, np); }, defaults),
       estimator("gauss_map", [](const Mesh& m, const auto& np) { CE::gauss_map_curvatures(m, np); }, defaults),
       estimator("gauss_map paper", [](const Mesh& m, const auto& np) { CE::gauss_map_curvatures(m, np); },
@@ -231,6 +236,8 @@ void expect_convergent_ones_converge(const std::vector<Row>& rows)
   expect_converges(rows, "paraboloid_fitting", 0.5, false);
   expect_converges(rows, "jet_fitting", 0.5, true);
   expect_converges(rows, "jet_fitting d4 3 rings", 2.0, true);
+  expect_converges(rows, "paraboloid d3", 1.8, true);
+  expect_converges(rows, "paraboloid d4", 2.6, true);
   expect_converges(rows, "chen_schmitt", 0.5, true);
   expect_gauss_map_converges(rows);
   expect_curve_network_says_where_it_falls_back(rows);
@@ -262,11 +269,28 @@ void expect_paraboloid_no_worse_than_jet(const std::vector<Row>& rows)
   }
 }
 
+// fit_degree(4) against CGAL's jet fitting of degree 4 on 3 rings, at the levels where that runs: the
+// H RMS at most 1.5 times jet's (measured 0.63 to 1.16). The maxima are printed, not asserted: at most
+// 2 times jet's except on the torus at 20 cells (2.5 times: 3 rings there span 70% of the tube's radius).
+void expect_degree_four_near_jet_degree_four(const std::vector<Row>& rows)
+{
+  const Row* ours = find_row(rows, "paraboloid d4");
+  const Row* jet = find_row(rows, "jet_fitting d4 3 rings");
+  ASSERT_TRUE(ours != nullptr && jet != nullptr);
+  SCOPED_TRACE(ours->surface);
+  for (std::size_t l = 0; l < jet->measured_levels; ++l) {
+    std::printf("%-9s %3zu cells: fit_degree(4) / jet d4 on 3 rings: H RMS %.2f, max %.2f\n", ours->surface.c_str(),
+                levels[l], ours->level[l].H.rms / jet->level[l].H.rms, ours->level[l].H.max / jet->level[l].H.max);
+    EXPECT_LE(ours->level[l].H.rms, 1.5 * jet->level[l].H.rms) << levels[l] << " cells";
+  }
+}
+
 TEST(MarchingTetrahedraConvergence, Ellipsoid)
 {
   const std::vector<Row> rows = measure(ce_test::implicit_ellipsoid(1.0, 0.8, 0.6));
   expect_convergent_ones_converge(rows);
   expect_paraboloid_no_worse_than_jet(rows);
+  expect_degree_four_near_jet_degree_four(rows);
 }
 
 TEST(MarchingTetrahedraConvergence, Torus)
@@ -274,6 +298,7 @@ TEST(MarchingTetrahedraConvergence, Torus)
   const std::vector<Row> rows = measure(ce_test::implicit_torus(1.0, 0.4));
   expect_convergent_ones_converge(rows);
   expect_paraboloid_no_worse_than_jet(rows);
+  expect_degree_four_near_jet_degree_four(rows);
 }
 
 TEST(MarchingTetrahedraConvergence, Blobs)
@@ -281,6 +306,7 @@ TEST(MarchingTetrahedraConvergence, Blobs)
   const std::vector<Row> rows = measure(ce_test::gaussian_blobs());
   expect_convergent_ones_converge(rows);
   expect_paraboloid_no_worse_than_jet(rows);
+  expect_degree_four_near_jet_degree_four(rows);
 }
 
 } // namespace

@@ -397,6 +397,9 @@ TEST_F(ToolTest, BadOptions)
   expect_rejected({"-m", "jet", "--degree", "3", "--monge-degree", "4", p.string()}, "Monge degree 4 > 3");
   expect_rejected({"--degree", "3", p.string()}, "degree without jet");
   expect_rejected({"-m", "taubin", "--monge-degree", "2", p.string()}, "Monge degree without jet");
+  expect_rejected({"--fit-degree", "1", p.string()}, "fit degree 1");
+  expect_rejected({"--fit-degree", "5", p.string()}, "fit degree 5");
+  expect_rejected({"-m", "jet", "--fit-degree", "3", p.string()}, "fit degree without paraboloid");
   expect_rejected({"--scalars", (dir / "f.sol").string(), p.string()}, "--scalars on a surface");
   expect_rejected({}, "no input");
   const Result r = run({"-o", (dir / "out.txt").string(), p.string()});
@@ -736,6 +739,25 @@ TEST_F(ToolTest, JetDegreesAndMongeDegrees)
   }
 }
 
+// --fit-degree 3 and 4 on the same sphere (Taylor fits over 2 and 3 rings): every row estimated,
+// H within 1% of 1/r.
+TEST_F(ToolTest, FitDegrees)
+{
+  const double r = 2.5;
+  const fs::path p = file("sphere.off", off(icosphere(3, r)));
+  for (const std::string degree : {"3", "4"}) {
+    const std::vector<Row> rows = csv(p, {"--fit-degree", degree});
+    expect_consistent(rows, "fit degree " + degree);
+    double max_error_H = 0;
+    for (const Row& row : rows) {
+      EXPECT_NE(row.status, "failed");
+      max_error_H = std::max(max_error_H, std::abs(row.values[2] * r - 1));
+    }
+    std::cout << "fit degree " << degree << ": max |H r - 1| = " << max_error_H << '\n';
+    EXPECT_LT(max_error_H, 0.01);
+  }
+}
+
 TEST_F(ToolTest, CsvRowsFollowTheFileOrder)
 {
   // Same sphere, vertices written in reverse order: rows reverse too.
@@ -997,6 +1019,7 @@ TEST_F(TetrahedralTest, RowsFollowTheFileOrderAndScalarsNamesTheSol)
   EXPECT_NE(r.err.find("--scalars"), std::string::npos) << r.err;
   expect_rejected({"--scalars", (dir / "missing.sol").string(), mesh.string()}, "--scalars names a missing file");
   expect_rejected({"--scalars", (dir / "a.mesh").string(), mesh.string()}, "--scalars names a .mesh");
+  expect_rejected({"--fit-degree", "4", mesh.string()}, "fit degree 4 on tetrahedral input");
 }
 
 TEST_F(TetrahedralTest, IsolatedVerticesAreFailed)

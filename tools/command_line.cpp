@@ -25,6 +25,9 @@ constexpr const char* usage_text =
   "      --rings N      neighborhood rings a vertex's estimate starts with (default 1;\n"
   "                     paraboloid, gauss-map, taubin, chen-schmitt, jet, and .mesh input)\n"
   "      --order N      extrapolation order of curve-network, 1..4 (default 1)\n"
+  "      --fit-degree D degree of the paraboloid method's fit, 2..4 (default 2: Hamann's paraboloid;\n"
+  "                     3 and 4: Taylor fits over 2 and 3 rings, orders 2 and 3 on irregular meshes;\n"
+  "                     .mesh input: 2..3)\n"
   "      --degree D     degree of the jet (jet only), 2..4 (default 2)\n"
   "      --monge-degree D  degree of the Monge form (jet only), 2..D (default 2)\n"
   "      --scalars FILE the Medit .sol holding f for a .mesh INPUT (default: INPUT with the\n"
@@ -98,6 +101,8 @@ std::optional<Options> parse_arguments(int argc, char** argv)
       o.rings = parse_int(arg, value(arg), 1, 100);
     } else if (arg == "--order") {
       o.order = parse_int(arg, value(arg), 1, 4);
+    } else if (arg == "--fit-degree") {
+      o.fit_degree = parse_int(arg, value(arg), 2, 4);
     } else if (arg == "--degree") {
       // Jet degree 1 is a plane: CGAL's Monge form needs degree 2 at least.
       o.degree = parse_int(arg, value(arg), 2, 4);
@@ -128,6 +133,8 @@ std::optional<Options> parse_arguments(int argc, char** argv)
 
   if (o.order && o.method != Method::curve_network)
     fail("--order applies to the curve-network method only", 2);
+  if (o.fit_degree && o.method != Method::paraboloid)
+    fail("--fit-degree applies to the paraboloid method only (--degree is the jet's)", 2);
   if ((o.degree || o.monge_degree) && o.method != Method::jet)
     fail(std::string(o.degree ? "--degree" : "--monge-degree") + " applies to the jet method only", 2);
   if (o.monge_degree && *o.monge_degree > o.degree.value_or(2))
@@ -137,6 +144,8 @@ std::optional<Options> parse_arguments(int argc, char** argv)
   if (o.tetrahedral) {
     if (o.method != Method::paraboloid)
       fail("method '" + o.method_name + "' does not apply to tetrahedral input (.mesh): use paraboloid", 2);
+    if (o.fit_degree.value_or(2) > 3)
+      fail("--fit-degree 4 is for surfaces: tetrahedral input (.mesh) takes 2 or 3", 2);
     if (!o.output.empty() && lower_extension(o.output) == ".ply")
       fail("PLY output is for surfaces: write the curvatures of tetrahedral input (.mesh) as CSV", 2);
   } else if (!o.scalars.empty()) {

@@ -19,7 +19,8 @@ struct Options
   std::string method_name = "paraboloid";
   std::optional<int> rings;
   std::optional<int> order;
-  std::optional<int> degree, monge_degree;
+  std::optional<int> fit_degree;  // paraboloid
+  std::optional<int> degree, monge_degree;  // jet
   std::string scalars;
   bool tetrahedral = false;  // INPUT is a Medit .mesh
   int threads = 0;

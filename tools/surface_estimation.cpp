@@ -30,7 +30,9 @@ void run_estimator(const Options& o, const Mesh& mesh,
                     .vertex_estimation_status_map(status);
   const auto ring_np = with_rings(o, np);
   switch (o.method) {
-    case Method::paraboloid: CE::paraboloid_fitting_curvatures<Tag>(mesh, ring_np); break;
+    case Method::paraboloid:
+      CE::paraboloid_fitting_curvatures<Tag>(mesh, ring_np.fit_degree(o.fit_degree.value_or(2)));
+      break;
     case Method::gauss_map: CE::gauss_map_curvatures<Tag>(mesh, ring_np); break;
     case Method::taubin: CE::taubin_curvatures<Tag>(mesh, ring_np); break;
     case Method::chen_schmitt: CE::chen_schmitt_curvatures<Tag>(mesh, ring_np); break;

@@ -77,7 +77,8 @@ std::vector<Tetrahedral_row> estimate_tetrahedral(const Options& o, const Tetrah
                                   .vertex_principal_curvatures_and_directions_map(CGAL::make_property_map(principal))
                                   .vertex_mean_curvature_map(CGAL::make_property_map(H))
                                   .vertex_Gaussian_curvature_map(CGAL::make_property_map(K))
-                                  .vertex_estimation_status_map(CGAL::make_property_map(status)));
+                                  .vertex_estimation_status_map(CGAL::make_property_map(status))
+                                  .fit_degree(o.fit_degree.value_or(2)));
   seconds = run_with_threads(o.threads, [&](auto tag) {
     CE::hypersurface_paraboloid_fitting_curvatures<decltype(tag)>(input.mesh, np);
   });

@@ -65,7 +65,8 @@ enum class Estimation_status : unsigned char
   not_estimable, ///< no estimate: isolated vertex, degenerate neighborhood, invalid input; values are NaN
   fallback       ///< estimated by the estimator's documented fallback method, because its own method
                  ///< does not apply at the vertex (`curve_network_curvatures()`: no curve network there, or
-                 ///< its curves are no mesh lines)
+                 ///< its curves are no mesh lines; the paraboloid fits with `fit_degree` 3 or 4: that fit is not
+                 ///< determined, and the degree-2 fit serves)
 };
 
 /// The name of a status: `ok`, `widened`, `not_estimable` or `fallback`.

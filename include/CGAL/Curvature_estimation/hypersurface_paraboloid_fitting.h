@@ -155,6 +155,14 @@ void put_hypersurface_estimate(const NamedParameters& np, const Vertex& v, const
 ///                    (the 3-volume-weighted mean of the cells' normals)}
 ///     \cgalParamDefault{`Vertex_normal_method::quadric_fit`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{fit_degree}
+///     \cgalParamDescription{the degree of the fitted polynomial in the three tangent variables: 2 is Hamann's
+///                           paraboloid, 3 the cubic Taylor fit with linear terms over 2 rings, in the frame of the
+///                           first-order normal, as for `paraboloid_fitting_curvatures()` (degree 4, whose fit would
+///                           have 34 unknowns, is for surfaces only)}
+///     \cgalParamType{`int`, 2 or 3}
+///     \cgalParamDefault{`2`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{neighborhood_rings}
 ///     \cgalParamDescription{number of rings an interior vertex's fit starts with (1: Hamann's platelet)}
 ///     \cgalParamType{`int`, at least 1}
@@ -216,7 +224,8 @@ void hypersurface_paraboloid_fitting_curvatures(const TetrahedralComplex& comple
   using Stars = Tetrahedral_complex_stars<TetrahedralComplex>;
   using Fitter = internal::Tetrahedral_platelet_fitter<Stars>;
 
-  const internal::Fit_parameters fit = internal::fit_parameters(np, "hypersurface_paraboloid_fitting_curvatures");
+  const internal::Fit_parameters fit =
+    internal::curvature_fit_parameters(np, "hypersurface_paraboloid_fitting_curvatures", 3);
   if (fit.normal_method != Vertex_normal_method::quadric_fit && fit.normal_method != Vertex_normal_method::area_weighted)
     throw std::invalid_argument("hypersurface_paraboloid_fitting_curvatures: vertex_normal_method must be "
                                 "quadric_fit or area_weighted");

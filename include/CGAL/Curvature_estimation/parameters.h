@@ -44,6 +44,7 @@
   X(curve_model_t, curve_model)                                                       \
   X(extrapolation_order_t, extrapolation_order)                                       \
   X(max_curve_irregularity_t, max_curve_irregularity)                                 \
+  X(fit_degree_t, fit_degree)                                                         \
   X(jet_degree_t, jet_degree)                                                         \
   X(monge_degree_t, monge_degree)
 #define CGAL_CE_PACKAGE_PARAMETERS(X)        \

@@ -22,6 +22,7 @@ struct Platelet_fit_settings
   int boundary_rings = 1;   // rings a boundary vertex starts with
   int max_rings = 3;        // widening stops here
   double max_condition = 1e3;
+  int degree = 2;           // fit_degree: 2 Hamann's fit (and its default normal), 3 or 4 a Taylor fit of that degree
   // Whether test (b) of quadric_fit.h (whitened coordinates) may accept the
   // widest neighborhood where test (a) refuses every one; false: test (a) alone.
   bool whitened_conditioning = true;
@@ -52,6 +53,18 @@ Fit_parameters fit_parameters(const NamedParameters& np, const char* caller)
   if (!(settings.max_condition > 1))
     throw std::invalid_argument(where + "max_condition_number must be greater than 1");
   return {settings, parameter_or(np, internal_np::vertex_normal_method, Vertex_normal_method::quadric_fit)};
+}
+
+// fit_parameters() and `fit_degree` from `np`, for the functions that fit curvatures
+// by it: 2 to `max_degree`. Throws std::invalid_argument where it is out of that range.
+template <typename NamedParameters>
+Fit_parameters curvature_fit_parameters(const NamedParameters& np, const char* caller, int max_degree)
+{
+  Fit_parameters fit = fit_parameters(np, caller);
+  fit.settings.degree = parameter_or(np, internal_np::fit_degree, 2);
+  if (fit.settings.degree < 2 || fit.settings.degree > max_degree)
+    throw std::invalid_argument(std::string(caller) + ": fit_degree must be in 2.." + std::to_string(max_degree));
+  return fit;
 }
 
 } // namespace internal

@@ -30,6 +30,7 @@
 #include <CGAL/Curvature_estimation/internal/local_coordinates.h>
 #include <CGAL/Curvature_estimation/internal/quadric_fit.h>
 #include <CGAL/Curvature_estimation/internal/shape_operator.h>
+#include <CGAL/Curvature_estimation/internal/surface_estimate.h>
 #include <CGAL/Curvature_estimation/internal/symmetric_eigen.h>
 #include <CGAL/Curvature_estimation/internal/tangent_frame.h>
 
@@ -55,6 +56,15 @@ namespace internal {
 constexpr int cubic_normal_min_rings = 3;
 constexpr double cubic_normal_condition_factor = 1e3;
 
+// The condition thresholds of the fits of fit_degree 3 and 4, over the quadratic
+// one (1e5 and 1e8 by default). Measured on the Delaunay and marching-tetrahedra
+// test meshes: at these values the degree-3 fit widens no Delaunay vertex and
+// 4% to 7% of the marching-tetrahedra vertices (1-rings of nearly coincident
+// vertices), whose wider fits have maxima 2 to 3 times smaller than their 2-ring
+// fits accepted at 1e6; ten times lower widens 30% of them and triples the
+// Delaunay maxima. The degree-4 fit's errors do not change between 1e7 and 1e9.
+constexpr double degree_condition_factor(int degree) { return degree == 3 ? 1e2 : 1e5; }
+
 template <typename Neighborhood>
 class Platelet_fit_core
 {
@@ -71,13 +81,18 @@ public:
   {}
 
   // Hamann's fit: the paraboloid through the k-ring in the tangent frame of the
-  // given `normal` (any length), widened while ill-conditioned.
+  // given `normal` (any length), widened while ill-conditioned; with a fit degree
+  // of 3 or 4, that fit (see fit_of_degree) in the same frame, and Hamann's fit,
+  // status fallback, where it is not determined up to the widest ring.
   Estimate fit(Vertex v, const Vector& normal)
   {
     const double length = normal.norm();
     if (!(length > 0) || !std::isfinite(length) || !gather(v))
       return Estimate();
-    return fit_curvature(normal / length);
+    if (settings_.degree == 2)
+      return fit_curvature(normal / length);
+    const Estimate estimate = fit_of_degree(normal / length);
+    return estimate.status != Estimation_status::not_estimable ? estimate : as_fallback(fit_curvature(normal / length));
   }
 
   // The same with the normal estimated by `method`. With the quadric_fit normal,
@@ -88,17 +103,20 @@ public:
   // widening and its quartic term. Where the linear terms are not determined on any
   // ring, and at boundary vertices (whose one-sided stencils make them less
   // accurate than Hamann's fit in the cubic normal's frame), Hamann's fit.
+  // With a fit degree of 3 or 4, that fit in the frame of the first-order normal;
+  // where it is not determined up to the widest ring (the one-sided corners of
+  // tetrahedral grids), the degree-2 fit, status fallback.
   Estimate fit(Vertex v, Vertex_normal_method method)
   {
-    Vector normal;
-    if (!gather(v) || !estimate_normal(v, method, true, normal))
+    if (!gather(v))
       return Estimate();
-    if (method == Vertex_normal_method::quadric_fit && !on_border_) {
-      const Estimate estimate = fit_curvature<Taylor_fit<D, 1, 2>>(normal);
-      if (estimate.status != Estimation_status::not_estimable)
-        return estimate;
-    }
-    return fit_curvature(normal);
+    if (settings_.degree == 2)
+      return fit_of_degree_two(v, method);
+    Vector normal;
+    if (!first_order_normal(v, method, true, normal))
+      return Estimate();
+    const Estimate estimate = fit_of_degree(normal);
+    return estimate.status != Estimation_status::not_estimable ? estimate : as_fallback(fit_of_degree_two(v, method));
   }
 
   // The neighbors gathered by the last fit or normal, on every ring it reached
@@ -115,6 +133,20 @@ public:
   }
 
 private:
+  // fit(v, method) with fit_degree 2, after gather(v).
+  Estimate fit_of_degree_two(Vertex v, Vertex_normal_method method)
+  {
+    Vector normal;
+    if (!estimate_normal(v, method, true, normal))
+      return Estimate();
+    if (method == Vertex_normal_method::quadric_fit && !on_border_) {
+      const Estimate estimate = fit_curvature<Taylor_fit<D, 1, 2>>(normal);
+      if (estimate.status != Estimation_status::not_estimable)
+        return estimate;
+    }
+    return fit_curvature(normal);
+  }
+
   // The 1-ring, and the local length scale (mean distance to the 1-ring) that
   // makes the fit scale invariant.
   bool gather(Vertex v)
@@ -221,10 +253,8 @@ private:
   // frame (see fit_normal). `gathered`: whether gather(v) has succeeded.
   bool estimate_normal(Vertex v, Vertex_normal_method method, bool gathered, Vector& normal)
   {
-    normal = neighborhood_.initial_normal(v, method, gathered, offsets_, finite_, scale_);
-    if (!all_finite(normal) || !(normal.squaredNorm() > 0))
+    if (!first_order_normal(v, method, gathered, normal))
       return false;
-    normal.normalize();
     if (method != Vertex_normal_method::quadric_fit)
       return true;
     if constexpr (!Neighborhood::restart_from_hyperplane)
@@ -240,6 +270,16 @@ private:
         normal = -normal;
       return all_finite(normal) && fit_normal(normal);
     }
+  }
+
+  // The neighborhood's first-order normal (for quadric_fit the area-weighted one), unit.
+  bool first_order_normal(Vertex v, Vertex_normal_method method, bool gathered, Vector& normal)
+  {
+    normal = neighborhood_.initial_normal(v, method, gathered, offsets_, finite_, scale_);
+    if (!all_finite(normal) || !(normal.squaredNorm() > 0))
+      return false;
+    normal.normalize();
+    return true;
   }
 
   // A symmetric interior stencil cancels the odd terms, so the degree-2 fit over
@@ -301,27 +341,58 @@ private:
     Fit fit;
     if constexpr (Fit::linear_terms) {
       if (fit_widening(normal, tangents, first, first, settings_.max_condition, fit) != 0)
-        return curvature_estimate(normal, tangents, first, fit);
+        return curvature_estimate(normal, tangents, first, 1, fit);
       Taylor_fit<D, 1, 3> cubic;
       const int rings = fit_widening(normal, tangents, first + 1, settings_.max_rings,
                                      cubic_normal_condition_factor * settings_.max_condition, cubic);
       if (rings != 0)
-        return curvature_estimate(normal, tangents, rings, cubic);
+        return curvature_estimate(normal, tangents, rings, 1, cubic);
     }
     int rings = fit_widening(normal, tangents, first, settings_.max_rings, settings_.max_condition, fit);
     if (rings == 0)
       rings = fit_whitened(normal, tangents, first, settings_.max_rings, settings_.max_condition, fit);
     if (rings == 0)
       return Estimate();
-    return curvature_estimate(normal, tangents, rings, fit);
+    return curvature_estimate(normal, tangents, rings, 1, fit);
   }
 
-  // The estimate from an accepted fit over `rings` rings; on surfaces, a fit with
-  // linear terms is first solved again without the curvature's quartic term.
-  template <typename Fit>
-  Estimate curvature_estimate(const Vector& normal, const Tangents& tangents, int rings, Fit& fit) const
+  // fit_degree 3 or 4: the Taylor fit of that degree with linear terms in the frame
+  // of `normal` (a first-order normal is enough: the fitted gradient corrects it to
+  // the fit's order), unweighted, over degree - 1 rings at least (the starting
+  // rings if more), widened while test (a) refuses, up to max_neighborhood_rings or
+  // one ring more; test (b) on the widest where (a) accepts none. Degree 4 is for
+  // surfaces only (a hypersurface's quartic fit has 34 unknowns).
+  Estimate fit_of_degree(const Vector& normal)
   {
-    if constexpr (D == 2 && Fit::linear_terms) {
+    if constexpr (D == 2)
+      if (settings_.degree == 4)
+        return fit_of_degree<Taylor_fit<D, 1, 4>>(normal);
+    return fit_of_degree<Taylor_fit<D, 1, 3>>(normal);
+  }
+
+  template <typename Fit>
+  Estimate fit_of_degree(const Vector& normal)
+  {
+    const Tangents tangents = tangent_basis<N>(normal);
+    const int first = (std::max)(start_rings(), Fit::last_order - 1);
+    const int widest = (std::max)(settings_.max_rings, first + 1);
+    const double max_condition = degree_condition_factor(Fit::last_order) * settings_.max_condition;
+    Fit fit;
+    int rings = fit_widening(normal, tangents, first, widest, max_condition, fit);
+    if (rings == 0)
+      rings = fit_whitened(normal, tangents, first, widest, max_condition, fit);
+    if (rings == 0)
+      return Estimate();
+    return curvature_estimate(normal, tangents, rings, first, fit);
+  }
+
+  // The estimate from an accepted fit over `rings` rings (status widened where
+  // that is more than `asked`); on surfaces, a fit with linear terms and no
+  // quartic ones is first solved again without the curvature's quartic term.
+  template <typename Fit>
+  Estimate curvature_estimate(const Vector& normal, const Tangents& tangents, int rings, int asked, Fit& fit) const
+  {
+    if constexpr (D == 2 && Fit::linear_terms && Fit::last_order < 4) {
       const Eigen::Matrix<double, D, D> first_hessian = fit.hessian();
       fit.solve_again([&](const auto& add) {
         for_each_sample<Fit>(normal, tangents, rings, [&](const auto& x, double height, double weight) {
@@ -332,7 +403,8 @@ private:
     const Graph_curvature<N> curvature = graph_curvature<N>(fit.hessian(), fit.gradient(), tangents, normal);
     if (!all_finite(curvature.curvatures) || !all_finite(curvature.directions))
       return Estimate();
-    return Neighborhood::estimate(rings > 1 ? Estimation_status::widened : Estimation_status::ok, curvature, scale_);
+    return Neighborhood::estimate(rings > asked ? Estimation_status::widened : Estimation_status::ok, curvature,
+                                  scale_);
   }
 
   template <typename Fit>
@@ -346,12 +418,13 @@ private:
   }
 
   // Calls add(x, height, weight) for each sample of the rings up to `rings` in
-  // the frame: samples weighted by a Gaussian of width the mean 1-ring edge in
-  // the cubic fit only (see cubic_normal_min_rings); Hamann's fit is unweighted.
+  // the frame: samples weighted by a Gaussian of width the mean 1-ring edge in the
+  // cubic fits of fit_degree 2 only (see cubic_normal_min_rings); Hamann's fit and
+  // the fits of fit_degree 3 and 4, over the rings their degree needs, are unweighted.
   template <typename Fit, typename Add>
   void for_each_sample(const Vector& normal, const Tangents& tangents, int rings, const Add& add) const
   {
-    constexpr bool weighted = Fit::unknowns > Taylor_fit<D, 1, 2>::unknowns;
+    const bool weighted = settings_.degree == 2 && Fit::unknowns > Taylor_fit<D, 1, 2>::unknowns;
     const Eigen::Matrix<double, D, N> to_tangent = tangents.transpose();
     const std::size_t end = neighborhood_.ring_end(rings);  // hoisted: add writes memory
     for (std::size_t i = 1; i < end; ++i) {

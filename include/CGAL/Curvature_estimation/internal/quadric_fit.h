@@ -3,12 +3,14 @@
 // numerical core shared by the surface (D = 2) and hypersurface (D = 3)
 // estimators:
 //
-//   h(x) = [g . x] + 1/2 x^T C x [+ cubic terms],   x in R^D,   C symmetric,
+//   h(x) = [g . x] + 1/2 x^T C x [+ cubic [+ quartic] terms],   x in R^D,   C symmetric,
 //
-// the terms of orders FirstOrder..LastOrder (FirstOrder 1 or 2, LastOrder 2 or 3).
+// the terms of orders FirstOrder..LastOrder (FirstOrder 1 or 2, LastOrder 2 to 4).
 // FirstOrder = 2 trusts the frame's normal (Hamann's fit); FirstOrder = 1 fits
 // the gradient, i.e. corrects the normal; LastOrder = 3 takes the cubic part out
-// of the gradient, which a one-sided (boundary) stencil does not cancel.
+// of the gradient, which a one-sided (boundary) stencil does not cancel, and out
+// of C, which an uneven stencil does not cancel either (fit_degree 3); LastOrder
+// = 4 the quartic part too (fit_degree 4).
 //
 // When a fit is accepted: two tests of conditioning. The samples x_i (weights
 // w_i) are given in tangent coordinates scaled by a length of the mesh (the mean
@@ -110,18 +112,20 @@ constexpr int number_of_monomials(int D, int order)
 template <int D, int FirstOrder, int LastOrder>
 class Taylor_fit
 {
-  static_assert(FirstOrder >= 1 && FirstOrder <= 2 && LastOrder >= 2 && LastOrder <= 3, "orders out of range");
+  static_assert(FirstOrder >= 1 && FirstOrder <= 2 && LastOrder >= 2 && LastOrder <= 4, "orders out of range");
   static_assert(FirstOrder == 1 || LastOrder == 2, "the own monomials must be a prefix of the tested ones");
 
   static constexpr int quadratic = number_of_monomials(D, 2);
-  static constexpr int cubic = LastOrder == 3 ? number_of_monomials(D, 3) : 0;
+  static constexpr int cubic = LastOrder >= 3 ? number_of_monomials(D, 3) : 0;
+  static constexpr int quartic = LastOrder == 4 ? number_of_monomials(D, 4) : 0;
 
 public:
   static constexpr bool linear_terms = FirstOrder == 1;
-  static constexpr int unknowns = (FirstOrder == 1 ? D : 0) + quadratic + cubic;
+  static constexpr int last_order = LastOrder;
+  static constexpr int unknowns = (FirstOrder == 1 ? D : 0) + quadratic + cubic + quartic;
   // The monomials of orders 1..LastOrder, those of test (b): the fit's own ones
-  // first (quadratic, [linear,] [cubic]), then for Hamann's fit the linear ones.
-  static constexpr int tested = D + quadratic + cubic;
+  // first (quadratic, [linear,] [cubic, [quartic]]), then for Hamann's fit the linear ones.
+  static constexpr int tested = D + quadratic + cubic + quartic;
 
   using Point = Eigen::Matrix<double, D, 1>;
   using Hessian = Eigen::Matrix<double, D, D>;
@@ -245,6 +249,17 @@ private:
   static constexpr double sqrt_multiplicity(int i, int j, int k)
   {
     return i == k ? 1.0 : (i == j || j == k) ? 1.7320508075688772935 : 2.4494897427831780982;
+  }
+
+  // The same for i <= j <= k <= l: 4! over the factorials of the runs of equal
+  // indices (1, 4, 6, 12 or 24).
+  static constexpr double sqrt_multiplicity(int i, int j, int k, int l)
+  {
+    return i == l                 ? 1.0
+           : (i == k || j == l)   ? 2.0
+           : (i == j && k == l)   ? 2.4494897427831780982
+           : (i == j || j == k || k == l) ? 3.4641016151377545870
+                                          : 4.8989794855663561964;
   }
 
   // The inverse of the leading n x n block of the normal matrix and its 1-norm
@@ -390,7 +405,7 @@ private:
       CGAL_CURVATURE_ESTIMATION_UNROLL
       for (int i = 0; i < D; ++i)
         row[column++] = x[i];
-    if constexpr (LastOrder == 3)
+    if constexpr (LastOrder >= 3)
       CGAL_CURVATURE_ESTIMATION_UNROLL
       for (int i = 0; i < D; ++i)
         CGAL_CURVATURE_ESTIMATION_UNROLL
@@ -398,6 +413,16 @@ private:
           CGAL_CURVATURE_ESTIMATION_UNROLL
           for (int k = j; k < D; ++k)
             row[column++] = sqrt_multiplicity(i, j, k) * x[i] * x[j] * x[k];
+    if constexpr (LastOrder == 4)
+      CGAL_CURVATURE_ESTIMATION_UNROLL
+      for (int i = 0; i < D; ++i)
+        CGAL_CURVATURE_ESTIMATION_UNROLL
+        for (int j = i; j < D; ++j)
+          CGAL_CURVATURE_ESTIMATION_UNROLL
+          for (int k = j; k < D; ++k)
+            CGAL_CURVATURE_ESTIMATION_UNROLL
+            for (int l = k; l < D; ++l)
+              row[column++] = sqrt_multiplicity(i, j, k, l) * x[i] * x[j] * x[k] * x[l];
     if constexpr (FirstOrder == 2)
       CGAL_CURVATURE_ESTIMATION_UNROLL
       for (int i = 0; i < D; ++i)

@@ -105,9 +105,10 @@ void put_surface_estimate(const NamedParameters& np, VertexDescriptor v, const S
   (void)e;
 }
 
-// An estimator's documented fallback estimate: `e` with the status fallback
-// unless it is not estimable.
-inline Surface_estimate as_fallback(Surface_estimate e)
+// An estimator's documented fallback estimate: `e` (a Surface_estimate or a
+// Hypersurface_estimate) with the status fallback unless it is not estimable.
+template <typename Estimate>
+Estimate as_fallback(Estimate e)
 {
   if (e.status != Estimation_status::not_estimable)
     e.status = Estimation_status::fallback;
