@@ -87,10 +87,9 @@ private:
 /// and the curvatures are those of that graph at the vertex: the normal's remaining
 /// error is absorbed by g instead of leaking into C through an uneven 1-ring. On
 /// marching-tetrahedra meshes (80 cells per axis, test
-/// `MarchingTetrahedraConvergence`) this lowers the largest H error from 0.50 to
-/// 0.087 (ellipsoid), from 0.41 to 0.13 (torus) and from 0.51 to 0.11 (blobs), below
-/// `jet_fitting_curvatures()`'s 0.13, 0.20 and 0.16; on Delaunay meshes of random points
-/// it lowers it 3 to 9 times. That fit is then solved again with the heights less the
+/// `MarchingTetrahedraConvergence`) this lowered the largest H error of Hamann's fit
+/// in the same normal's frame 4 to 6 times, and on Delaunay meshes of random points
+/// 3 to 9 times. That fit is then solved again with the heights less the
 /// quartic term that its own curvatures imply, (x^T C x) |C x|^2 / 8 for the Hessian C
 /// (the whole quartic part of a sphere's or a cylinder's height, which a degree-2 fit
 /// otherwise takes into C as an O(h^2) error): on spheres and cylinders the error is
