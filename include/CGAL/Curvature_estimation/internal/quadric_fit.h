@@ -73,6 +73,15 @@
 // curvature_quartic(C, x), C from the first fit, removes it: the error of C in it
 // is O(h^2) (or O(h)), times |x|^4 / |x|^2, hence of higher order.
 //
+// Cost. The entry (i, j) of N is sum_k w_k m_i(x_k) m_j(x_k), and m_i m_j is a
+// monomial of degree 2 to 2 LastOrder: N is a table of the moments
+// sum_k w_k x_k^a, fewer than its entries (42 against 105 for surfaces at
+// LastOrder 4, 25 against 45 at 3), which add sums per sample. N = L L^T
+// (Cholesky) is inverted as L^-1 (N^-1 = L^-T L^-1, which also solves), and
+// ||N^-1||_1 <= ||L^-1||_1 ||L^-1||_inf decides test (a) where it is below the
+// threshold; only above it is ||N^-1||_1 computed (as costly as the
+// factorisation), so that the decisions are those of the exact number.
+//
 // The estimators (platelet_fit.h) try (a) on each neighborhood up to the widest,
 // and (b) on the widest where (a) accepts none: where (a) accepts, the fit and
 // its rounding are those of the scaled coordinates, as without (b); (a) is also
@@ -87,6 +96,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <utility>
 
 // Full unrolling of the fixed-size loops below: with constant indices the packed
 // matrix addressing folds away (without it GCC leaves them as loops that cost
@@ -107,6 +117,119 @@ constexpr int number_of_monomials(int D, int order)
   // (D + order - 1) choose order
   return order == 0 ? 1 : number_of_monomials(D, order - 1) * (D + order - 1) / order;
 }
+
+// The exponents of a monomial of R^D, D <= 3.
+struct Monomial_exponents
+{
+  int power[3] = {0, 0, 0};
+};
+
+// The monomials of the rows of Taylor_fit<D, FirstOrder, LastOrder> (row: their
+// exponents, scale: their factors), and the moments that the entries of its
+// normal matrix are (see Taylor_fit::accumulate): every monomial of degree 2 to
+// 2 LastOrder (moment), ordered by degree, and for the packed entry k = (i, j)
+// of the normal matrix, entry_moment[k], the moment of the product of monomials
+// i and j, and entry_scale[k] = scale[i] scale[j].
+template <int D, int FirstOrder, int LastOrder>
+struct Monomial_tables
+{
+  static constexpr int tested = D + number_of_monomials(D, 2) + (LastOrder >= 3 ? number_of_monomials(D, 3) : 0) +
+                                (LastOrder == 4 ? number_of_monomials(D, 4) : 0);
+  static constexpr int moments()
+  {
+    int count = 0;
+    for (int degree = 2; degree <= 2 * LastOrder; ++degree)
+      count += number_of_monomials(D, degree);
+    return count;
+  }
+  // The first moment of degree 2 FirstOrder, the lowest that the fit's own block needs.
+  static constexpr int first_own_moment = FirstOrder == 1 ? 0 : number_of_monomials(D, 2) + number_of_monomials(D, 3);
+
+  Monomial_exponents row[tested] = {};
+  double scale[tested] = {};
+  Monomial_exponents moment[moments()] = {};
+  int entry_moment[tested * (tested + 1) / 2] = {};
+  double entry_scale[tested * (tested + 1) / 2] = {};
+
+  constexpr Monomial_tables()
+  {
+    // Each order's monomials are scaled to be orthonormal coordinates of the
+    // symmetric tensor x (x) ... (x) x (sqrt of the multiplicity), so that a
+    // rotation of the tangent frame acts on each block of the normal matrix by an
+    // orthogonal matrix and the condition number does not depend on how the frame
+    // is turned in the tangent space. Quadratic terms first so that their
+    // coefficients do not depend on FirstOrder; the fit's own monomials first.
+    int column = 0;
+    add_order(2, column);
+    if (FirstOrder == 1)
+      add_order(1, column);
+    for (int order = 3; order <= LastOrder; ++order)
+      add_order(order, column);
+    if (FirstOrder == 2)
+      add_order(1, column);
+    for (int degree = 2, m = 0; degree <= 2 * LastOrder; ++degree)
+      for (int a = degree; a >= 0; --a)
+        for (int b = degree - a; b >= (D == 2 ? degree - a : 0); --b, ++m) {
+          moment[m].power[0] = a;
+          moment[m].power[1] = b;
+          moment[m].power[2] = degree - a - b;
+        }
+    for (int i = 0, k = 0; i < tested; ++i)
+      for (int j = 0; j <= i; ++j, ++k) {
+        Monomial_exponents product;
+        for (int d = 0; d < 3; ++d)
+          product.power[d] = row[i].power[d] + row[j].power[d];
+        entry_moment[k] = moment_index(product);
+        entry_scale[k] = scale[i] * scale[j];
+      }
+  }
+
+private:
+  // The monomials of one order, indices i <= j <= ..., each scaled by the square
+  // root of the number of distinct orderings of its indices.
+  constexpr void add_order(int order, int& column)
+  {
+    int indices[4] = {0, 0, 0, 0};
+    while (true) {
+      Monomial_exponents e;
+      for (int t = 0; t < order; ++t)
+        ++e.power[indices[t]];
+      row[column] = e;
+      // order! over the product of the factorials of the exponents
+      int orderings = 1;
+      for (int t = 2; t <= order; ++t)
+        orderings *= t;
+      for (int d = 0; d < 3; ++d)
+        for (int t = 2; t <= e.power[d]; ++t)
+          orderings /= t;
+      scale[column] = square_root(orderings) / (order == 2 ? 2 : 1);  // the quadratic ones as in 1/2 x^T C x
+      ++column;
+      // the next non-decreasing index tuple
+      int t = order - 1;
+      while (t >= 0 && indices[t] == D - 1)
+        --t;
+      if (t < 0)
+        return;
+      ++indices[t];
+      for (int u = t + 1; u < order; ++u)
+        indices[u] = indices[t];
+    }
+  }
+
+  static constexpr double square_root(int n)
+  {
+    return n == 1 ? 1.0 : n == 2 ? 1.4142135623730950488 : n == 3 ? 1.7320508075688772935 : n == 4 ? 2.0
+         : n == 6 ? 2.4494897427831780982 : n == 12 ? 3.4641016151377545870 : 4.8989794855663561964;
+  }
+
+  constexpr int moment_index(const Monomial_exponents& e) const
+  {
+    for (int m = 0; m < moments(); ++m)
+      if (moment[m].power[0] == e.power[0] && moment[m].power[1] == e.power[1] && moment[m].power[2] == e.power[2])
+        return m;
+    return -1;
+  }
+};
 
 // See the header comment for when solve accepts a fit.
 template <int D, int FirstOrder, int LastOrder>
@@ -139,16 +262,16 @@ public:
 
   Taylor_fit() { clear(); }
 
-  void clear() { reset<packed>(); }
+  void clear() { reset(); }
 
   // One sample: a point of the tangent space, the height above it, its weight.
-  void add(const Point& x, double height, double weight = 1.0) { accumulate<unknowns>(x, height, weight); }
+  void add(const Point& x, double height, double weight = 1.0) { accumulate<Tables::first_own_moment>(x, height, weight); }
 
   int size() const { return size_; }
 
   // Test (a) of the header comment: solves the normal equations unless there
   // are fewer samples than unknowns, the normal matrix is singular, or its
-  // condition number (1-norm, exact for this small matrix) exceeds
+  // condition number (1-norm, decided by a bound or else exact: see Cost) exceeds
   // `max_condition`: a stencil that is singular in the tangent space can still
   // be solvable in floating point once tilted, and its solution is then garbage.
   // The caller scales the samples to a unit length (the mean 1-ring edge), so
@@ -158,12 +281,24 @@ public:
   bool solve(double max_condition)
   {
     condition_ = std::numeric_limits<double>::infinity();
+    condition_pending_ = false;
     if (size_ < unknowns)
       return false;
-    if (!conditioned_inverse<unknowns>(max_condition, inverse_, condition_))
+    fill_normal_matrix<unknowns>();
+    if (!inverse_factor<unknowns>(normal_matrix_, factor_))
       return false;
+    own_norm_ = one_norm<unknowns>(normal_matrix_);
+    // ||N^-1||_1 = ||L^-T L^-1||_1 <= ||L^-1||_1 ||L^-1||_inf: the product, which
+    // costs as much as the factorisation, only where this bound does not decide.
+    if (own_norm_ * triangular_norms_product<unknowns>(factor_) <= max_condition)
+      condition_pending_ = true;
+    else {
+      condition_ = own_norm_ * inverse_one_norm<unknowns>(factor_);
+      if (!(condition_ <= max_condition))
+        return false;
+    }
     whitened_ = false;
-    solve_with(inverse_);
+    solve_with(factor_);
     return true;
   }
 
@@ -192,20 +327,26 @@ public:
     Hessian W;
     if (!(weight_sum > 0) || !whitening((D / weight_sum) * moments, W))
       return false;
-    reset<tested_packed>();
-    samples([&](const Point& x, double height, double weight) { accumulate<tested>(W * x, height, weight); });
+    reset();
+    samples([&](const Point& x, double height, double weight) { accumulate<0>(W * x, height, weight); });
+    fill_normal_matrix<tested>();
 
-    double whitened_inverse[tested_packed];
-    if (!conditioned_inverse<tested>(max_condition, whitened_inverse, whitened_condition_))
+    double whitened_factor[tested_packed];
+    if (!inverse_factor<tested>(normal_matrix_, whitened_factor))
       return false;
-    // The fit's own block is a prefix of N_y; its inverse where it is not all of N_y.
-    if constexpr (unknowns == tested)
-      std::copy(whitened_inverse, whitened_inverse + packed, inverse_);
-    else if (!invert<unknowns>(normal_matrix_, inverse_))
+    whitened_condition_ = one_norm<tested>(normal_matrix_) * inverse_one_norm<tested>(whitened_factor);
+    if (!(whitened_condition_ <= max_condition))
       return false;
+    if (condition_pending_) {  // test (a)'s factor is about to be replaced
+      condition_ = condition_number();
+      condition_pending_ = false;
+    }
+    // The fit's own block is a leading block of N_y, its Cholesky factor the
+    // leading block of N_y's, and so is the inverse of that factor: a prefix.
+    std::copy(whitened_factor, whitened_factor + packed, factor_);
     whitened_ = true;
     whitening_ = W;
-    solve_with(inverse_);
+    solve_with(factor_);
     map_back();
     return true;
   }
@@ -224,13 +365,16 @@ public:
       for (int i = 0; i < unknowns; ++i)
         right_hand_side_[i] += weight * height * row[i];
     });
-    solve_with(inverse_);
+    solve_with(factor_);
     if (whitened_)
       map_back();
   }
 
   // The condition numbers of tests (a) and (b) at the last solve and solve_whitened (infinity where not computed).
-  double condition_number() const { return condition_; }
+  double condition_number() const
+  {
+    return condition_pending_ ? own_norm_ * inverse_one_norm<unknowns>(factor_) : condition_;
+  }
   double whitened_condition_number() const { return whitened_condition_; }
   const Hessian& hessian() const { return hessian_; }
   const Point& gradient() const { return gradient_; }
@@ -243,49 +387,31 @@ private:
   static constexpr int tested_packed = tested * (tested + 1) / 2;
   static constexpr int index(int i, int j) { return i >= j ? i * (i + 1) / 2 + j : j * (j + 1) / 2 + i; }
 
-  static constexpr double quadratic_scale(int i, int j) { return i == j ? 0.5 : half_sqrt2; }
+  using Tables = Monomial_tables<D, FirstOrder, LastOrder>;
+  static_assert(Tables::tested == tested, "the tables' rows are the tested monomials");
+  static constexpr Tables tables_{};
 
-  // The square root of the number of distinct orderings of the indices i <= j <= k.
-  static constexpr double sqrt_multiplicity(int i, int j, int k)
+  // The fit from the inverse F = L^-1 of the Cholesky factor of the fit's own
+  // block (N = L L^T): F^T (F rhs), the coefficients of the monomials.
+  void solve_with(const double (&F)[packed])
   {
-    return i == k ? 1.0 : (i == j || j == k) ? 1.7320508075688772935 : 2.4494897427831780982;
-  }
-
-  // The same for i <= j <= k <= l: 4! over the factorials of the runs of equal
-  // indices (1, 4, 6, 12 or 24).
-  static constexpr double sqrt_multiplicity(int i, int j, int k, int l)
-  {
-    return i == l                 ? 1.0
-           : (i == k || j == l)   ? 2.0
-           : (i == j && k == l)   ? 2.4494897427831780982
-           : (i == j || j == k || k == l) ? 3.4641016151377545870
-                                          : 4.8989794855663561964;
-  }
-
-  // The inverse of the leading n x n block of the normal matrix and its 1-norm
-  // condition number; false where the block is not positive definite (the
-  // condition is left as it was) or the condition exceeds `max_condition`.
-  template <int n, std::size_t size>
-  bool conditioned_inverse(double max_condition, double (&inverse)[size], double& condition) const
-  {
-    if (!invert<n>(normal_matrix_, inverse))
-      return false;
-    condition = one_norm<n>(normal_matrix_) * one_norm<n>(inverse);
-    return condition <= max_condition;
-  }
-
-  // The fit from the inverse of the fit's own block: inverse * rhs, the
-  // coefficients of the monomials.
-  void solve_with(const double (&inverse)[packed])
-  {
-    double coefficients[unknowns];
+    double reduced[unknowns];
     CGAL_CURVATURE_ESTIMATION_UNROLL
     for (int i = 0; i < unknowns; ++i) {
       double value = 0;
       CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int j = 0; j < unknowns; ++j)
-        value += inverse[index(i, j)] * right_hand_side_[j];
-      coefficients[i] = value;
+      for (int k = 0; k <= i; ++k)
+        value += F[index(i, k)] * right_hand_side_[k];
+      reduced[i] = value;
+    }
+    double coefficients[unknowns];
+    CGAL_CURVATURE_ESTIMATION_UNROLL
+    for (int j = 0; j < unknowns; ++j) {
+      double value = 0;
+      CGAL_CURVATURE_ESTIMATION_UNROLL
+      for (int i = j; i < unknowns; ++i)
+        value += F[index(i, j)] * reduced[i];
+      coefficients[j] = value;
     }
     set_coefficients(coefficients);
   }
@@ -352,81 +478,82 @@ private:
     gradient_ = whitening_.transpose() * gradient_;
   }
 
-  // Zeroes the first n entries of the normal matrix (the own block, or all of
-  // it), the right-hand side and the count.
-  template <int n>
+  // Zeroes the moments, the right-hand side and the count.
   void reset()
   {
-    CGAL_CURVATURE_ESTIMATION_UNROLL
-    for (int k = 0; k < n; ++k)
-      normal_matrix_[k] = 0;
-    CGAL_CURVATURE_ESTIMATION_UNROLL
-    for (double& b : right_hand_side_)
-      b = 0;
+    std::fill(moments_, moments_ + Tables::moments(), 0.0);
+    std::fill(right_hand_side_, right_hand_side_ + unknowns, 0.0);
     size_ = 0;
   }
 
-  // Adds a sample to the first n rows of the normal matrix (the fit's own
-  // unknowns, or all the tested monomials) and to the right-hand side.
-  template <int n>
+  // Adds a sample to the moments from `first` on (those of the fit's own block,
+  // or all) and to the right-hand side. An entry of the normal matrix is a sum of
+  // products of two monomials, which is a scaled moment sum_i w_i x_i^a (a
+  // monomial of degree 2 to 2 LastOrder): summing the moments (42 for surfaces at
+  // fit_degree 4, 25 at 3) costs less than summing the entries (105, 45).
+  template <int first>
   void accumulate(const Point& x, double height, double weight)
   {
-    double row[tested];
-    monomials(x, row);
-    // The lower triangle only, row by row: the matrix is symmetric.
+    double powers[D][2 * LastOrder + 1];
     CGAL_CURVATURE_ESTIMATION_UNROLL
-    for (int i = 0, k = 0; i < n; ++i) {
-      const double weighted = weight * row[i];
+    for (int d = 0; d < D; ++d) {
+      powers[d][0] = d == 0 ? weight : 1.0;
       CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int j = 0; j <= i; ++j)
-        normal_matrix_[k++] += weighted * row[j];
-      if (i < unknowns)
-        right_hand_side_[i] += weight * height * row[i];
+      for (int k = 1; k <= 2 * LastOrder; ++k)
+        powers[d][k] = powers[d][k - 1] * x[d];
     }
+    add_moments<first>(powers, std::make_index_sequence<Tables::moments() - first>());
+    double weighted_row[tested];
+    fill_row(powers, weighted_row, std::make_index_sequence<tested>());
+    CGAL_CURVATURE_ESTIMATION_UNROLL
+    for (int i = 0; i < unknowns; ++i)
+      right_hand_side_[i] += height * weighted_row[i];
     ++size_;
   }
 
-  // The row of the monomials of x: the fit's own, then the other tested ones.
+  template <int first, std::size_t... m>
+  void add_moments(const double (&powers)[D][2 * LastOrder + 1], std::index_sequence<m...>)
+  {
+    ((moments_[first + m] += product_of_powers(tables_.moment[first + m], powers)), ...);
+  }
+
+  // The leading n x n block of the normal matrix from the moments.
+  template <int n>
+  void fill_normal_matrix()
+  {
+    CGAL_CURVATURE_ESTIMATION_UNROLL
+    for (int k = 0; k < n * (n + 1) / 2; ++k)
+      normal_matrix_[k] = tables_.entry_scale[k] * moments_[tables_.entry_moment[k]];
+  }
+
+  template <int P>
+  static double product_of_powers(const Monomial_exponents& e, const double (&powers)[D][P])
+  {
+    double value = powers[0][e.power[0]];
+    CGAL_CURVATURE_ESTIMATION_UNROLL
+    for (int d = 1; d < D; ++d)
+      value *= powers[d][e.power[d]];
+    return value;
+  }
+
+  // The row of the monomials of x: the fit's own, then the other tested ones (see Monomial_tables).
   static void monomials(const Point& x, double (&row)[tested])
   {
-    int column = 0;
-    // Each order's monomials are scaled to be orthonormal coordinates of the
-    // symmetric tensor x (x) ... (x) x (sqrt of the multiplicity), so that a
-    // rotation of the tangent frame acts on each block of the normal matrix by an
-    // orthogonal matrix and the condition number does not depend on how the frame
-    // is turned in the tangent space. Quadratic terms first so that their
-    // coefficients do not depend on FirstOrder.
+    double powers[D][LastOrder + 1];
     CGAL_CURVATURE_ESTIMATION_UNROLL
-    for (int i = 0; i < D; ++i)
+    for (int d = 0; d < D; ++d) {
+      powers[d][0] = 1;
       CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int j = i; j < D; ++j)
-        row[column++] = quadratic_scale(i, j) * x[i] * x[j];
-    if constexpr (FirstOrder == 1)
-      CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int i = 0; i < D; ++i)
-        row[column++] = x[i];
-    if constexpr (LastOrder >= 3)
-      CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int i = 0; i < D; ++i)
-        CGAL_CURVATURE_ESTIMATION_UNROLL
-        for (int j = i; j < D; ++j)
-          CGAL_CURVATURE_ESTIMATION_UNROLL
-          for (int k = j; k < D; ++k)
-            row[column++] = sqrt_multiplicity(i, j, k) * x[i] * x[j] * x[k];
-    if constexpr (LastOrder == 4)
-      CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int i = 0; i < D; ++i)
-        CGAL_CURVATURE_ESTIMATION_UNROLL
-        for (int j = i; j < D; ++j)
-          CGAL_CURVATURE_ESTIMATION_UNROLL
-          for (int k = j; k < D; ++k)
-            CGAL_CURVATURE_ESTIMATION_UNROLL
-            for (int l = k; l < D; ++l)
-              row[column++] = sqrt_multiplicity(i, j, k, l) * x[i] * x[j] * x[k] * x[l];
-    if constexpr (FirstOrder == 2)
-      CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int i = 0; i < D; ++i)
-        row[column++] = x[i];
+      for (int k = 1; k <= LastOrder; ++k)
+        powers[d][k] = powers[d][k - 1] * x[d];
+    }
+    fill_row(powers, row, std::make_index_sequence<tested>());
+  }
+
+  template <int P, std::size_t... i>
+  static void fill_row(const double (&powers)[D][P], double (&row)[tested], std::index_sequence<i...>)
+  {
+    ((row[i] = tables_.scale[i] * product_of_powers(tables_.row[i], powers)), ...);
   }
 
   // The largest column sum of absolute values of the leading n x n block of a packed symmetric matrix.
@@ -445,48 +572,55 @@ private:
     return largest;
   }
 
-  // The inverse of the leading n x n block of a packed symmetric matrix, by
-  // Cholesky factorisation in plain loops over fixed sizes (the compiler unrolls
-  // them; Eigen's small triangular solves are several times slower); false if it
-  // is not positive definite.
-  template <int n, std::size_t size, std::size_t inverse_size>
-  static bool invert(const double (&m)[size], double (&inverse)[inverse_size])
+  // F = L^-1 for the Cholesky factor L of the leading n x n block of a packed
+  // symmetric matrix (N = L L^T, so N^-1 = F^T F), packed, in plain loops over
+  // fixed sizes (the compiler unrolls them; Eigen's small triangular solves are
+  // several times slower); false if the block is not positive definite.
+  template <int n, std::size_t size, std::size_t factor_size>
+  static bool inverse_factor(const double (&m)[size], double (&F)[factor_size])
   {
-    static_assert(size >= n * (n + 1) / 2 && inverse_size >= n * (n + 1) / 2, "arrays too small");
-    double L[n * (n + 1) / 2];  // lower triangular factor, packed
+    static_assert(size >= n * (n + 1) / 2 && factor_size >= n * (n + 1) / 2, "arrays too small");
     double inverse_diagonal[n];
     CGAL_CURVATURE_ESTIMATION_UNROLL
     for (int j = 0; j < n; ++j) {
       double diagonal = m[index(j, j)];
       CGAL_CURVATURE_ESTIMATION_UNROLL
       for (int k = 0; k < j; ++k)
-        diagonal -= L[index(j, k)] * L[index(j, k)];
+        diagonal -= F[index(j, k)] * F[index(j, k)];
       if (!(diagonal > 0))
         return false;
-      L[index(j, j)] = std::sqrt(diagonal);
-      inverse_diagonal[j] = 1 / L[index(j, j)];
+      F[index(j, j)] = std::sqrt(diagonal);
+      inverse_diagonal[j] = 1 / F[index(j, j)];
       CGAL_CURVATURE_ESTIMATION_UNROLL
       for (int i = j + 1; i < n; ++i) {
         double value = m[index(i, j)];
         CGAL_CURVATURE_ESTIMATION_UNROLL
         for (int k = 0; k < j; ++k)
-          value -= L[index(i, k)] * L[index(j, k)];
-        L[index(i, j)] = value * inverse_diagonal[j];
+          value -= F[index(i, k)] * F[index(j, k)];
+        F[index(i, j)] = value * inverse_diagonal[j];
       }
     }
-    // L^-1, lower triangular, in place of L; then inverse = L^-T L^-1.
+    // L^-1, lower triangular, in place of L.
     CGAL_CURVATURE_ESTIMATION_UNROLL
     for (int j = 0; j < n; ++j) {
       CGAL_CURVATURE_ESTIMATION_UNROLL
       for (int i = j + 1; i < n; ++i) {
-        double value = -L[index(i, j)] * inverse_diagonal[j];
+        double value = -F[index(i, j)] * inverse_diagonal[j];
         CGAL_CURVATURE_ESTIMATION_UNROLL
         for (int k = j + 1; k < i; ++k)
-          value -= L[index(i, k)] * L[index(k, j)];
-        L[index(i, j)] = value * inverse_diagonal[i];
+          value -= F[index(i, k)] * F[index(k, j)];
+        F[index(i, j)] = value * inverse_diagonal[i];
       }
-      L[index(j, j)] = inverse_diagonal[j];
+      F[index(j, j)] = inverse_diagonal[j];
     }
+    return true;
+  }
+
+  // ||F^T F||_1 for a packed lower triangular n x n F: the 1-norm of N^-1.
+  template <int n, std::size_t size>
+  static double inverse_one_norm(const double (&F)[size])
+  {
+    double column_sums[n] = {};
     CGAL_CURVATURE_ESTIMATION_UNROLL
     for (int i = 0; i < n; ++i)
       CGAL_CURVATURE_ESTIMATION_UNROLL
@@ -494,15 +628,44 @@ private:
         double value = 0;
         CGAL_CURVATURE_ESTIMATION_UNROLL
         for (int k = i; k < n; ++k)
-          value += L[index(k, i)] * L[index(k, j)];
-        inverse[index(i, j)] = value;
+          value += F[index(k, i)] * F[index(k, j)];
+        column_sums[j] += std::abs(value);
+        if (j != i)
+          column_sums[i] += std::abs(value);
       }
-    return true;
+    return *std::max_element(column_sums, column_sums + n);
   }
 
-  double normal_matrix_[tested_packed];  // add fills the own block, a prefix; solve_whitened all of it
+  // ||F||_1 ||F||_inf for a packed lower triangular n x n F: a bound of ||F^T F||_1.
+  template <int n, std::size_t size>
+  static double triangular_norms_product(const double (&F)[size])
+  {
+    double column_sums[n] = {};
+    double largest_row_sum = 0;
+    CGAL_CURVATURE_ESTIMATION_UNROLL
+    for (int i = 0; i < n; ++i) {
+      double row_sum = 0;
+      CGAL_CURVATURE_ESTIMATION_UNROLL
+      for (int j = 0; j <= i; ++j) {
+        row_sum += std::abs(F[index(i, j)]);
+        column_sums[j] += std::abs(F[index(i, j)]);
+      }
+      largest_row_sum = row_sum > largest_row_sum ? row_sum : largest_row_sum;
+    }
+    return largest_row_sum * *std::max_element(column_sums, column_sums + n);
+  }
+
+  double moments_[Tables::moments()];  // see accumulate
+  // From the moments: solve fills the own block, a prefix; solve_whitened all of it.
+  double normal_matrix_[tested_packed];
   double right_hand_side_[unknowns];
-  double inverse_[packed];  // of the own block, at the last accepted solve or solve_whitened
+  // F = L^-1 for the own block N = L L^T (see inverse_factor), at the last
+  // accepted solve or solve_whitened, and the own block's 1-norm at the last solve.
+  double factor_[packed];
+  double own_norm_ = 0;
+  // Whether the last solve accepted by the bound of the condition number, which
+  // condition_number() then replaces by the number itself.
+  bool condition_pending_ = false;
   bool whitened_ = false;   // whether that was solve_whitened, in the coordinates whitening_ x
   Hessian whitening_ = Hessian::Identity();
   int size_ = 0;
