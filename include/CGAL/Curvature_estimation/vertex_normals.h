@@ -143,6 +143,19 @@ struct Vertex_normal_estimator
  *     \cgalParamDefault{`1e3`}
  *   \cgalParamNEnd
  *
+ *   \cgalParamNBegin{fit_degree}
+ *     \cgalParamDescription{`quadric_fit` only: the degree of the Taylor fit whose gradient corrects the
+ *                           area-weighted normal, in the interior and at the boundary: `2` as described above,
+ *                           `3` or `4` the fits of `paraboloid_fitting_curvatures()` with the same `fit_degree`
+ *                           (over 2 and 3 rings), whose normals are of third and fourth order where the degree-2
+ *                           normal is of second order; where such a fit is not determined up to the widest
+ *                           neighborhood, the degree-2 normal. These are the normals that those fits read their
+ *                           curvatures in; pass them as `vertex_normal_map` to another estimator to give it
+ *                           normals of that order.}
+ *     \cgalParamType{`int`, 2 to 4}
+ *     \cgalParamDefault{`2`}
+ *   \cgalParamNEnd
+ *
  *   \cgalParamNBegin{vertex_estimation_status_map}
  *     \cgalParamDescription{an optional output property map receiving for each vertex
  *                           `Estimation_status::ok` when a normal was estimated and
@@ -155,7 +168,7 @@ struct Vertex_normal_estimator
  *
  * @tparam ConcurrencyTag `CGAL::Sequential_tag` (default), `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`
  *
- * \throws std::invalid_argument if a ring or condition parameter is out of its range, or if
+ * \throws std::invalid_argument if a ring, condition or `fit_degree` parameter is out of its range, or if
  *         `ball_radius` is given (neighborhoods are set in rings).
  */
 template <typename ConcurrencyTag = CGAL::Sequential_tag,
@@ -177,7 +190,7 @@ void estimate_vertex_normals(const FaceGraph& g,
 
   const GT traits = choose_parameter<GT>(get_parameter(np, ::CGAL::internal_np::geom_traits));
   const VPM vpm = internal::parameter_or(np, ::CGAL::internal_np::vertex_point, get_const_property_map(CGAL::vertex_point, g));
-  const internal::Fit_parameters fit = internal::fit_parameters(np, "estimate_vertex_normals");
+  const internal::Fit_parameters fit = internal::curvature_fit_parameters(np, "estimate_vertex_normals", 4);
 
   constexpr bool write_status = internal::has_parameter<NamedParameters, internal_np::vertex_estimation_status_map_t>();
 

@@ -55,8 +55,9 @@ Fit_parameters fit_parameters(const NamedParameters& np, const char* caller)
   return {settings, parameter_or(np, internal_np::vertex_normal_method, Vertex_normal_method::quadric_fit)};
 }
 
-// fit_parameters() and `fit_degree` from `np`, for the functions that fit curvatures
-// by it: 2 to `max_degree`. Throws std::invalid_argument where it is out of that range.
+// fit_parameters() and `fit_degree` from `np`, for the functions that take it (the
+// paraboloid fits and the quadric_fit normals): 2 to `max_degree`. Throws
+// std::invalid_argument where it is out of that range.
 template <typename NamedParameters>
 Fit_parameters curvature_fit_parameters(const NamedParameters& np, const char* caller, int max_degree)
 {

@@ -123,12 +123,25 @@ public:
   // (0 where its vertex had no finite point).
   std::size_t neighbors() const { return offsets_.empty() ? 0 : offsets_.size() - 1; }
 
-  // The unit normal by `method`; false where there is none.
+  // The unit normal by `method`; false where there is none. With quadric_fit and
+  // a fit degree of 3 or 4, the first-order normal corrected by the gradient of
+  // that fit (see fit_of_degree), or where it is not determined up to the widest
+  // ring, by the degree-2 fit's.
   bool normal(Vertex v, Vertex_normal_method method, Vector& normal)
   {
     const bool gathered = neighborhood_.platelet_for_normal(method);
     if (gathered && !gather(v))
       return false;
+    if (method == Vertex_normal_method::quadric_fit && settings_.degree != 2) {
+      if (!first_order_normal(v, method, gathered, normal))
+        return false;
+      const Tangents tangents = tangent_basis<N>(normal);
+      const bool corrected = with_fit_of_degree([&](auto& fit) {
+        return fit_rings_of_degree(normal, tangents, fit) != 0 && correct_normal(normal, tangents, fit.gradient());
+      });
+      if (corrected)
+        return true;
+    }
     return estimate_normal(v, method, gathered, normal);
   }
 
@@ -364,26 +377,41 @@ private:
   // surfaces only (a hypersurface's quartic fit has 34 unknowns).
   Estimate fit_of_degree(const Vector& normal)
   {
+    const Tangents tangents = tangent_basis<N>(normal);
+    return with_fit_of_degree([&](auto& fit) {
+      const int rings = fit_rings_of_degree(normal, tangents, fit);
+      return rings != 0 ? curvature_estimate(normal, tangents, rings, first_rings_of_degree(fit), fit) : Estimate();
+    });
+  }
+
+  // use(fit) with a Taylor fit of the settings' degree (3 or 4) with linear terms.
+  template <typename Use>
+  auto with_fit_of_degree(const Use& use)
+  {
     if constexpr (D == 2)
-      if (settings_.degree == 4)
-        return fit_of_degree<Taylor_fit<D, 1, 4>>(normal);
-    return fit_of_degree<Taylor_fit<D, 1, 3>>(normal);
+      if (settings_.degree == 4) {
+        Taylor_fit<D, 1, 4> fit;
+        return use(fit);
+      }
+    Taylor_fit<D, 1, 3> fit;
+    return use(fit);
   }
 
   template <typename Fit>
-  Estimate fit_of_degree(const Vector& normal)
+  int first_rings_of_degree(const Fit&) const
   {
-    const Tangents tangents = tangent_basis<N>(normal);
-    const int first = (std::max)(start_rings(), Fit::last_order - 1);
+    return (std::max)(start_rings(), Fit::last_order - 1);
+  }
+
+  // The rings of the accepted fit of fit_of_degree, 0 where there is none.
+  template <typename Fit>
+  int fit_rings_of_degree(const Vector& normal, const Tangents& tangents, Fit& fit)
+  {
+    const int first = first_rings_of_degree(fit);
     const int widest = (std::max)(settings_.max_rings, first + 1);
     const double max_condition = degree_condition_factor(Fit::last_order) * settings_.max_condition;
-    Fit fit;
-    int rings = fit_widening(normal, tangents, first, widest, max_condition, fit);
-    if (rings == 0)
-      rings = fit_whitened(normal, tangents, first, widest, max_condition, fit);
-    if (rings == 0)
-      return Estimate();
-    return curvature_estimate(normal, tangents, rings, first, fit);
+    const int rings = fit_widening(normal, tangents, first, widest, max_condition, fit);
+    return rings != 0 ? rings : fit_whitened(normal, tangents, first, widest, max_condition, fit);
   }
 
   // The estimate from an accepted fit over `rings` rings (status widened where
