@@ -5,11 +5,11 @@
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 
 #include <algorithm>
 #include <iostream>
+#include <memory>
 #include <numeric>
 #include <string>
 #include <tuple>
@@ -20,8 +20,11 @@ namespace {
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 
+using Polygons = std::vector<std::vector<std::size_t>>;
+
 // The polygon's indices are distinct and at least three.
-bool is_simple(Flat_polygons::Polygon polygon)
+template <typename Polygon>
+bool is_simple(const Polygon& polygon)
 {
   if (polygon.size() < 3)
     return false;
@@ -36,6 +39,15 @@ bool is_simple(Flat_polygons::Polygon polygon)
   std::copy(polygon.begin(), polygon.end(), sorted.begin());
   std::sort(sorted.begin(), sorted.end());
   return std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
+}
+
+template <typename Polygon_range>
+bool all_simple(const Polygon_range& polygons)
+{
+  for (std::size_t f = 0; f < polygons.size(); ++f)
+    if (!is_simple(polygons[f]))
+      return false;
+  return true;
 }
 
 // For each point, the index of the first point of the file at the same place, by
@@ -61,7 +73,37 @@ std::vector<std::size_t> first_at_same_place(const std::vector<Point>& points, s
   return first;
 }
 
-// The halfedges of a soup grouped by source vertex, each group sorted by target.
+template <typename Polygon>
+std::size_t position(const Polygon& polygon, std::size_t v)
+{
+  return std::size_t(std::find(polygon.begin(), polygon.end(), v) - polygon.begin());
+}
+
+// The index that follows (step 1) or precedes (step -1) `v` in the polygon.
+template <typename Polygon>
+std::size_t neighbour_in(const Polygon& polygon, std::size_t v, int step)
+{
+  const std::size_t n = polygon.size();
+  return polygon[(position(polygon, v) + n + std::size_t(step)) % n];
+}
+
+// True if g is f, from another start (direction 1) or backwards (direction -1):
+// one polygon twice, in the same or in opposite orientations (both hold v).
+template <typename Polygon>
+bool is_same_polygon(const Polygon& f, const Polygon& g, std::size_t v, int direction)
+{
+  const std::size_t n = f.size();
+  if (g.size() != n)
+    return false;
+  const std::size_t i = position(f, v), j = position(g, v);
+  for (std::size_t k = 1; k < n; ++k)
+    if (f[(i + k * (n + std::size_t(direction))) % n] != g[(j + k) % n])
+      return false;
+  return true;
+}
+
+// The halfedges of simple polygons on `points` points, grouped by source vertex,
+// each group sorted by target.
 class Halfedges_by_source
 {
 public:
@@ -70,36 +112,42 @@ public:
     std::size_t target, face;
   };
 
-  explicit Halfedges_by_source(const Soup& soup) : start_(soup.points.size() + 1, 0)
+  template <typename Polygon_range>
+  Halfedges_by_source(std::size_t points, const Polygon_range& polygons) : start_(points + 1, 0)
   {
-    const Flat_polygons& faces = soup.faces;
-    for (std::size_t f = 0; f < faces.size(); ++f)
-      for (std::size_t index : faces[f])
+    for (std::size_t f = 0; f < polygons.size(); ++f)
+      for (std::size_t index : polygons[f])
         ++start_[index + 1];
     std::partial_sum(start_.begin(), start_.end(), start_.begin());
     halfedges_.resize(start_.back());
     std::vector<std::size_t> next = start_;  // where the next halfedge of each source goes
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-      const Flat_polygons::Polygon polygon = faces[f];
+    for (std::size_t f = 0; f < polygons.size(); ++f) {
+      const auto& polygon = polygons[f];
       for (std::size_t k = 0; k < polygon.size(); ++k)
         halfedges_[next[polygon[k]]++] = {polygon[(k + 1) % polygon.size()], f};
     }
-    for (std::size_t v = 0; v + 1 < start_.size(); ++v)
-      std::sort(begin(v), end(v), [](const Halfedge& a, const Halfedge& b) { return a.target < b.target; });
+    for (std::size_t v = 0; v < points; ++v)
+      std::sort(halfedges_.begin() + std::ptrdiff_t(start_[v]), halfedges_.begin() + std::ptrdiff_t(start_[v + 1]),
+                [](const Halfedge& a, const Halfedge& b) { return a.target < b.target; });
   }
 
+  std::size_t points() const { return start_.size() - 1; }
+  std::size_t size() const { return halfedges_.size(); }
   const Halfedge* begin(std::size_t v) const { return halfedges_.data() + start_[v]; }
   const Halfedge* end(std::size_t v) const { return halfedges_.data() + start_[v + 1]; }
-  Halfedge* begin(std::size_t v) { return halfedges_.data() + start_[v]; }
-  Halfedge* end(std::size_t v) { return halfedges_.data() + start_[v + 1]; }
-  std::size_t size() const { return halfedges_.size(); }
+
+  // The halfedges from `source` to `target`.
+  std::pair<const Halfedge*, const Halfedge*> between(std::size_t source, std::size_t target) const
+  {
+    return std::equal_range(begin(source), end(source), Halfedge{target, 0},
+                            [](const Halfedge& a, const Halfedge& b) { return a.target < b.target; });
+  }
 
   // The first halfedge from `source` to `target`, or null.
   const Halfedge* find(std::size_t source, std::size_t target) const
   {
-    const Halfedge* h = std::lower_bound(begin(source), end(source), target,
-                                         [](const Halfedge& a, std::size_t t) { return a.target < t; });
-    return h != end(source) && h->target == target ? h : nullptr;
+    const auto [first, last] = between(source, target);
+    return first != last ? first : nullptr;
   }
 
 private:
@@ -107,92 +155,120 @@ private:
   std::vector<Halfedge> halfedges_;
 };
 
-std::size_t position(Flat_polygons::Polygon polygon, std::size_t v)
+// What stands between simple polygons and a polygon mesh with a vertex per point.
+struct Topology
 {
-  return std::size_t(std::find(polygon.begin(), polygon.end(), v) - polygon.begin());
-}
+  bool directed_edges_unique = true;  // no edge twice in one orientation
+  bool one_fan_per_vertex = true;     // (if the above) the polygons around each vertex are one fan
+  bool isolated_points = false;       // a point in no polygon
+  bool duplicate_polygons = false;    // a polygon twice, in either orientation
+  std::size_t edges = 0;              // the mesh's edges, if a mesh
 
-// The index that follows (step 1) or precedes (step -1) `v` in the polygon.
-std::size_t neighbour_in(Flat_polygons::Polygon polygon, std::size_t v, int step)
+  bool polygon_mesh() const { return directed_edges_unique && one_fan_per_vertex; }
+};
+
+template <typename Polygon_range>
+Topology topology(const Halfedges_by_source& halfedges, const Polygon_range& polygons)
 {
-  const std::size_t n = polygon.size();
-  return polygon[(position(polygon, v) + n + std::size_t(step)) % n];
-}
-
-// True if g is f backwards: one polygon in two orientations (both hold v).
-bool is_reversed(Flat_polygons::Polygon f, Flat_polygons::Polygon g, std::size_t v)
-{
-  const std::size_t n = f.size();
-  if (g.size() != n)
-    return false;
-  const std::size_t i = position(f, v), j = position(g, v);
-  for (std::size_t k = 1; k < n; ++k)
-    if (f[(i + n - k) % n] != g[(j + k) % n])
-      return false;
-  return true;
-}
-
-// True if CGAL's soup repair and orientation would change nothing in the soup:
-// no two points at one place, polygons of three or more distinct indices, every
-// point in a polygon, no polygon twice, every edge in one polygon or in two of
-// opposite orientations, and the polygons around each vertex one fan. `edges` is
-// then the mesh's number of edges.
-bool is_a_polygon_mesh_as_it_is(const Soup& soup, std::size_t& edges)
-{
-  const Flat_polygons& faces = soup.faces;
-  for (std::size_t f = 0; f < faces.size(); ++f)
-    if (!is_simple(faces[f]))
-      return false;
-  std::size_t distinct = 0;
-  first_at_same_place(soup.points, distinct);
-  if (distinct != soup.points.size())
-    return false;
-
-  const Halfedges_by_source halfedges(soup);
+  Topology t;
   std::size_t boundary = 0;
-  for (std::size_t v = 0; v < soup.points.size(); ++v) {
-    if (halfedges.begin(v) == halfedges.end(v))
-      return false;  // an isolated point
+  for (std::size_t v = 0; v < halfedges.points(); ++v) {
+    if (halfedges.begin(v) == halfedges.end(v)) {
+      t.isolated_points = true;
+      continue;
+    }
+    for (auto h = halfedges.begin(v); h != halfedges.end(v); ++h) {
+      for (auto g = h + 1; g != halfedges.end(v) && g->target == h->target; ++g) {
+        t.directed_edges_unique = false;
+        t.duplicate_polygons |= is_same_polygon(polygons[h->face], polygons[g->face], v, 1);
+      }
+      if (v < h->target)
+        for (auto [g, last] = halfedges.between(h->target, v); g != last; ++g)
+          t.duplicate_polygons |= is_same_polygon(polygons[h->face], polygons[g->face], v, -1);
+    }
+    if (!t.directed_edges_unique)
+      continue;  // a fan is not well defined
     std::size_t fan_starts = 0;
     const Halfedges_by_source::Halfedge* start = halfedges.begin(v);
     for (auto h = halfedges.begin(v); h != halfedges.end(v); ++h) {
-      if (h + 1 != halfedges.end(v) && h[1].target == h->target)
-        return false;  // an edge twice in one orientation
-      const auto* opposite = halfedges.find(h->target, v);
-      if (!opposite) {
+      if (!halfedges.find(h->target, v))
         ++boundary;
-      } else if (v < h->target && is_reversed(faces[h->face], faces[opposite->face], v)) {
-        return false;  // a polygon twice, in opposite orientations
-      }
-      if (!halfedges.find(v, neighbour_in(faces[h->face], v, -1))) {
+      if (!halfedges.find(v, neighbour_in(polygons[h->face], v, -1))) {
         ++fan_starts;  // the polygon before h around v is missing: a fan starts at h
         start = h;
       }
     }
-    if (fan_starts > 1)
-      return false;
     // Around v from the fan's start: the polygon across h's edge, then v's halfedge in it.
     std::size_t visited = 1;
     for (const auto* h = start;; ++visited) {
       const auto* opposite = halfedges.find(h->target, v);
       if (!opposite)
         break;
-      h = halfedges.find(v, neighbour_in(faces[opposite->face], v, 1));
+      h = halfedges.find(v, neighbour_in(polygons[opposite->face], v, 1));
       if (h == start)
         break;
     }
-    if (visited != std::size_t(halfedges.end(v) - halfedges.begin(v)))
-      return false;  // several fans
+    if (fan_starts > 1 || visited != std::size_t(halfedges.end(v) - halfedges.begin(v)))
+      t.one_fan_per_vertex = false;
   }
-  edges = (halfedges.size() + boundary) / 2;
+  t.edges = (halfedges.size() + boundary) / 2;
+  return t;
+}
+
+// Reverses the polygons that CGAL's orient_polygon_soup reverses where it is well
+// defined: every edge in at most two polygons, and each connected component
+// orientable; the component (across edges of two polygons) takes the orientation
+// of its first polygon. Returns the polygons reversed, or false (and changes
+// nothing) where it is not well defined.
+bool orient_as_cgal(const Halfedges_by_source& halfedges, Polygons& polygons, std::vector<std::size_t>& reversed)
+{
+  std::vector<signed char> parity(polygons.size(), -1);
+  std::vector<std::size_t> stack;
+  for (std::size_t root = 0; root < polygons.size(); ++root) {
+    if (parity[root] >= 0)
+      continue;
+    parity[root] = 0;
+    stack.push_back(root);
+    while (!stack.empty()) {
+      const std::size_t f = stack.back();
+      stack.pop_back();
+      const std::vector<std::size_t>& polygon = polygons[f];
+      for (std::size_t k = 0; k < polygon.size(); ++k) {
+        const std::size_t u = polygon[k], v = polygon[(k + 1) % polygon.size()];
+        const auto [same_first, same_last] = halfedges.between(u, v);
+        const auto [opposite_first, opposite_last] = halfedges.between(v, u);
+        const std::size_t same = std::size_t(same_last - same_first);
+        const std::size_t opposite = std::size_t(opposite_last - opposite_first);
+        if (same + opposite > 2)
+          return false;  // a non-manifold edge
+        if (same + opposite == 1)
+          continue;  // a boundary edge
+        const std::size_t g = same == 2 ? (same_first->face == f ? same_first[1].face : same_first->face)
+                                        : opposite_first->face;
+        const auto p = static_cast<signed char>(parity[f] ^ (same == 2));
+        if (parity[g] < 0) {
+          parity[g] = p;
+          stack.push_back(g);
+        } else if (parity[g] != p) {
+          return false;  // a non-orientable component
+        }
+      }
+    }
+  }
+  reversed.clear();
+  for (std::size_t f = 0; f < polygons.size(); ++f)
+    if (parity[f] == 1) {
+      std::reverse(polygons[f].begin(), polygons[f].end());
+      reversed.push_back(f);
+    }
   return true;
 }
 
 // The mesh of a soup that is a polygon mesh, as CGAL's polygon_soup_to_polygon_mesh
 // makes it (a vertex per point in order, then the faces in order by Euler::add_face):
 // mesh index = soup index.
-template <typename Polygons>
-Mesh polygon_mesh(const std::vector<Point>& points, const Polygons& polygons, std::size_t edges)
+template <typename Polygon_range>
+Mesh polygon_mesh(const std::vector<Point>& points, const Polygon_range& polygons, std::size_t edges)
 {
   Mesh mesh;
   mesh.reserve(Mesh::size_type(points.size()), Mesh::size_type(edges), Mesh::size_type(polygons.size()));
@@ -209,8 +285,9 @@ Mesh polygon_mesh(const std::vector<Point>& points, const Polygons& polygons, st
 }
 
 // CGAL's repair_polygon_soup and orient_polygon_soup, step by step as
-// repair_polygon_soup takes them (CGAL 5.5), with file_to_mesh kept by index
-// through the steps that renumber the points; one note on stderr of what changed.
+// repair_polygon_soup takes them (CGAL 5.5), each skipped where the soup shows it
+// would change nothing, with file_to_mesh kept by index through the steps that
+// renumber the points; one note on stderr of what changed.
 Mesh repaired_mesh(const Soup& soup, std::vector<V>& file_to_mesh)
 {
   const std::size_t file_points = soup.points.size();
@@ -228,33 +305,46 @@ Mesh repaired_mesh(const Soup& soup, std::vector<V>& file_to_mesh)
       merged_index[i] = merged_index[first[i]];
     }
   }
-  std::vector<std::vector<std::size_t>> polygons(soup.faces.size());
+  Polygons polygons(soup.faces.size());
   for (std::size_t f = 0; f < polygons.size(); ++f)
     for (std::size_t index : soup.faces[f])
       polygons[f].push_back(merged_index[index]);
 
-  {
+  if (!all_simple(polygons)) {
     Silence_cerr silence;
     PMP::internal::simplify_polygons_in_polygon_soup<Kernel>(points, polygons);
     PMP::internal::split_pinched_polygons_in_polygon_soup<Kernel>(points, polygons);
     PMP::internal::remove_invalid_polygons_in_polygon_soup(points, polygons);
-    PMP::merge_duplicate_polygons_in_polygon_soup(points, polygons);
-    // Isolated points removed from the merged points' indices: kept[r] is the merged
-    // index of the point the repaired soup has at r.
-    std::vector<std::size_t> kept(points.size());
-    std::iota(kept.begin(), kept.end(), std::size_t(0));
-    PMP::remove_isolated_points_in_polygon_soup(kept, polygons);
-    std::vector<std::size_t> repaired_index(points.size(), file_points);
-    std::vector<Point> used;
-    used.reserve(kept.size());
-    for (std::size_t r = 0; r < kept.size(); ++r) {
-      repaired_index[kept[r]] = r;
-      used.push_back(points[kept[r]]);
-    }
-    points.swap(used);
-    for (std::size_t& index : merged_index)
-      index = repaired_index[index];
   }
+  // Isolated points removed from the merged points' indices: kept[r] is the merged
+  // index of the point the repaired soup has at r. Before the duplicate polygons are
+  // merged, unlike in repair_polygon_soup: merging them leaves no point isolated, and
+  // renumbering the points changes no polygon's duplicates, so the order is the same.
+  std::vector<std::size_t> kept(points.size());
+  std::iota(kept.begin(), kept.end(), std::size_t(0));
+  PMP::remove_isolated_points_in_polygon_soup(kept, polygons);
+  std::vector<std::size_t> repaired_index(points.size(), file_points);
+  std::vector<Point> used;
+  used.reserve(kept.size());
+  for (std::size_t r = 0; r < kept.size(); ++r) {
+    repaired_index[kept[r]] = r;
+    used.push_back(points[kept[r]]);
+  }
+  points.swap(used);
+  for (std::size_t& index : merged_index)
+    index = repaired_index[index];
+
+  auto halfedges = std::make_unique<Halfedges_by_source>(points.size(), polygons);
+  Topology t = topology(*halfedges, polygons);
+  if (t.duplicate_polygons) {
+    {
+      Silence_cerr silence;
+      PMP::merge_duplicate_polygons_in_polygon_soup(points, polygons);
+    }
+    halfedges = std::make_unique<Halfedges_by_source>(points.size(), polygons);
+    t = topology(*halfedges, polygons);
+  }
+
   std::vector<std::string> notes;
   const std::size_t distinct_used = points.size();
   const std::size_t faces_kept = polygons.size();
@@ -264,15 +354,33 @@ Mesh repaired_mesh(const Soup& soup, std::vector<V>& file_to_mesh)
     notes.push_back("dropped " + std::to_string(soup.faces.size() - faces_kept) +
                     " degenerate or duplicate faces");
 
-  const std::vector<std::vector<std::size_t>> before_orientation = polygons;
-  bool oriented = true;
-  {
-    Silence_cerr silence;
-    oriented = PMP::orient_polygon_soup(points, polygons);
-  }
   std::size_t reoriented = 0;
-  for (std::size_t f = 0; f < polygons.size() && f < before_orientation.size(); ++f)
-    reoriented += polygons[f] != before_orientation[f];
+  bool oriented = true;
+  if (!t.polygon_mesh()) {
+    std::vector<std::size_t> reversed;
+    if (orient_as_cgal(*halfedges, polygons, reversed)) {
+      halfedges = std::make_unique<Halfedges_by_source>(points.size(), polygons);
+      t = topology(*halfedges, polygons);
+      if (!t.polygon_mesh())  // CGAL would split vertices too: undone, and left to CGAL
+        for (std::size_t f : reversed)
+          std::reverse(polygons[f].begin(), polygons[f].end());
+      reoriented = reversed.size();
+    }
+    if (!t.polygon_mesh()) {
+      halfedges.reset();
+      const Polygons before_orientation = polygons;
+      {
+        Silence_cerr silence;
+        oriented = PMP::orient_polygon_soup(points, polygons);
+      }
+      reoriented = 0;
+      for (std::size_t f = 0; f < polygons.size() && f < before_orientation.size(); ++f)
+        reoriented += polygons[f] != before_orientation[f];
+      halfedges = std::make_unique<Halfedges_by_source>(points.size(), polygons);
+      t = topology(*halfedges, polygons);
+    }
+  }
+  halfedges.reset();
   if (reoriented > 0)
     notes.push_back("re-oriented " + std::to_string(reoriented) + " faces");
   if (points.size() > distinct_used)
@@ -282,12 +390,9 @@ Mesh repaired_mesh(const Soup& soup, std::vector<V>& file_to_mesh)
 
   Mesh mesh;
   if (!polygons.empty()) {
-    if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+    if (!t.polygon_mesh())
       fail("the faces cannot be made into a polygon mesh, even after repair");
-    std::size_t halfedges = 0;
-    for (const auto& polygon : polygons)
-      halfedges += polygon.size();
-    mesh = polygon_mesh(points, polygons, halfedges);
+    mesh = polygon_mesh(points, polygons, t.edges);
   }
 
   // A file's vertex is the mesh's vertex of its repaired index (the first copy of a
@@ -315,13 +420,21 @@ Mesh repaired_mesh(const Soup& soup, std::vector<V>& file_to_mesh)
 
 Mesh build_mesh(const Soup& soup, std::vector<V>& file_to_mesh)
 {
-  std::size_t edges = 0;
-  if (!is_a_polygon_mesh_as_it_is(soup, edges))
-    return repaired_mesh(soup, file_to_mesh);
-  file_to_mesh.resize(soup.points.size());
-  for (std::size_t i = 0; i < file_to_mesh.size(); ++i)
-    file_to_mesh[i] = V(Mesh::size_type(i));
-  return polygon_mesh(soup.points, soup.faces, edges);
+  // The direct path: a soup that CGAL's repair and orientation would not change.
+  std::size_t distinct = 0;
+  if (all_simple(soup.faces)) {
+    first_at_same_place(soup.points, distinct);
+    if (distinct == soup.points.size()) {
+      const Topology t = topology(Halfedges_by_source(soup.points.size(), soup.faces), soup.faces);
+      if (t.polygon_mesh() && !t.isolated_points && !t.duplicate_polygons) {
+        file_to_mesh.resize(soup.points.size());
+        for (std::size_t i = 0; i < file_to_mesh.size(); ++i)
+          file_to_mesh[i] = V(Mesh::size_type(i));
+        return polygon_mesh(soup.points, soup.faces, t.edges);
+      }
+    }
+  }
+  return repaired_mesh(soup, file_to_mesh);
 }
 
 } // namespace ce_tool
