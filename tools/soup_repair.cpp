@@ -9,7 +9,7 @@
 
 #include <algorithm>
 #include <iostream>
-#include <memory>
+#include <optional>
 #include <numeric>
 #include <string>
 #include <tuple>
@@ -293,22 +293,26 @@ Mesh repaired_mesh(const Soup& soup, std::vector<V>& file_to_mesh)
   const std::size_t file_points = soup.points.size();
   // Duplicate points merged: numbered by their first occurrence, as CGAL numbers them.
   std::size_t distinct = 0;
-  const std::vector<std::size_t> first = first_at_same_place(soup.points, distinct);
   std::vector<std::size_t> merged_index(file_points);
   std::vector<Point> points;
-  points.reserve(distinct);
-  for (std::size_t i = 0; i < file_points; ++i) {
-    if (first[i] == i) {
-      merged_index[i] = points.size();
-      points.push_back(soup.points[i]);
-    } else {
-      merged_index[i] = merged_index[first[i]];
+  {
+    const std::vector<std::size_t> first = first_at_same_place(soup.points, distinct);
+    points.reserve(distinct);
+    for (std::size_t i = 0; i < file_points; ++i) {
+      if (first[i] == i) {
+        merged_index[i] = points.size();
+        points.push_back(soup.points[i]);
+      } else {
+        merged_index[i] = merged_index[first[i]];
+      }
     }
   }
   Polygons polygons(soup.faces.size());
-  for (std::size_t f = 0; f < polygons.size(); ++f)
+  for (std::size_t f = 0; f < polygons.size(); ++f) {
+    polygons[f].reserve(soup.faces[f].size());
     for (std::size_t index : soup.faces[f])
       polygons[f].push_back(merged_index[index]);
+  }
 
   if (!all_simple(polygons)) {
     Silence_cerr silence;
@@ -320,29 +324,37 @@ Mesh repaired_mesh(const Soup& soup, std::vector<V>& file_to_mesh)
   // index of the point the repaired soup has at r. Before the duplicate polygons are
   // merged, unlike in repair_polygon_soup: merging them leaves no point isolated, and
   // renumbering the points changes no polygon's duplicates, so the order is the same.
-  std::vector<std::size_t> kept(points.size());
-  std::iota(kept.begin(), kept.end(), std::size_t(0));
-  PMP::remove_isolated_points_in_polygon_soup(kept, polygons);
-  std::vector<std::size_t> repaired_index(points.size(), file_points);
-  std::vector<Point> used;
-  used.reserve(kept.size());
-  for (std::size_t r = 0; r < kept.size(); ++r) {
-    repaired_index[kept[r]] = r;
-    used.push_back(points[kept[r]]);
+  {
+    std::vector<std::size_t> kept(points.size());
+    std::iota(kept.begin(), kept.end(), std::size_t(0));
+    PMP::remove_isolated_points_in_polygon_soup(kept, polygons);
+    std::vector<std::size_t> repaired_index(points.size(), file_points);
+    std::vector<Point> used;
+    used.reserve(kept.size());
+    for (std::size_t r = 0; r < kept.size(); ++r) {
+      repaired_index[kept[r]] = r;
+      used.push_back(points[kept[r]]);
+    }
+    points.swap(used);
+    for (std::size_t& index : merged_index)
+      index = repaired_index[index];
   }
-  points.swap(used);
-  for (std::size_t& index : merged_index)
-    index = repaired_index[index];
 
-  auto halfedges = std::make_unique<Halfedges_by_source>(points.size(), polygons);
-  Topology t = topology(*halfedges, polygons);
+  // The halfedges and topology of the polygons as they are (the old ones freed first).
+  std::optional<Halfedges_by_source> halfedges;
+  Topology t;
+  const auto analyse = [&] {
+    halfedges.reset();
+    halfedges.emplace(points.size(), polygons);
+    t = topology(*halfedges, polygons);
+  };
+  analyse();
   if (t.duplicate_polygons) {
     {
       Silence_cerr silence;
       PMP::merge_duplicate_polygons_in_polygon_soup(points, polygons);
     }
-    halfedges = std::make_unique<Halfedges_by_source>(points.size(), polygons);
-    t = topology(*halfedges, polygons);
+    analyse();
   }
 
   std::vector<std::string> notes;
@@ -359,8 +371,7 @@ Mesh repaired_mesh(const Soup& soup, std::vector<V>& file_to_mesh)
   if (!t.polygon_mesh()) {
     std::vector<std::size_t> reversed;
     if (orient_as_cgal(*halfedges, polygons, reversed)) {
-      halfedges = std::make_unique<Halfedges_by_source>(points.size(), polygons);
-      t = topology(*halfedges, polygons);
+      analyse();
       if (!t.polygon_mesh())  // CGAL would split vertices too: undone, and left to CGAL
         for (std::size_t f : reversed)
           std::reverse(polygons[f].begin(), polygons[f].end());
@@ -376,8 +387,7 @@ Mesh repaired_mesh(const Soup& soup, std::vector<V>& file_to_mesh)
       reoriented = 0;
       for (std::size_t f = 0; f < polygons.size() && f < before_orientation.size(); ++f)
         reoriented += polygons[f] != before_orientation[f];
-      halfedges = std::make_unique<Halfedges_by_source>(points.size(), polygons);
-      t = topology(*halfedges, polygons);
+      analyse();
     }
   }
   halfedges.reset();
@@ -387,13 +397,6 @@ Mesh repaired_mesh(const Soup& soup, std::vector<V>& file_to_mesh)
     notes.push_back("duplicated " + std::to_string(points.size() - distinct_used) + " non-manifold vertices");
   if (!oriented && points.size() == distinct_used)
     notes.push_back("could not orient every face consistently");
-
-  Mesh mesh;
-  if (!polygons.empty()) {
-    if (!t.polygon_mesh())
-      fail("the faces cannot be made into a polygon mesh, even after repair");
-    mesh = polygon_mesh(points, polygons, t.edges);
-  }
 
   // A file's vertex is the mesh's vertex of its repaired index (the first copy of a
   // vertex that the orientation split), or none if its point is in no kept face.
@@ -405,6 +408,15 @@ Mesh repaired_mesh(const Soup& soup, std::vector<V>& file_to_mesh)
     else
       ++unused;
   }
+  merged_index = std::vector<std::size_t>();
+
+  Mesh mesh;
+  if (!polygons.empty()) {
+    if (!t.polygon_mesh())
+      fail("the faces cannot be made into a polygon mesh, even after repair");
+    mesh = polygon_mesh(points, polygons, t.edges);
+  }
+
   if (!notes.empty()) {
     std::string line = "curvature: note: repaired the input:";
     for (std::size_t i = 0; i < notes.size(); ++i)
