@@ -824,6 +824,31 @@ TEST_F(ToolTest, PlyOutputReadsBack)
   EXPECT_EQ(int((*status)[last]), 2);
 }
 
+// An error while the output is written (a face the PLY's uchar count cannot hold)
+// leaves no file, not even the temporary one, and keeps an existing output.
+TEST_F(ToolTest, ErrorWhileWritingLeavesNoFile)
+{
+  Indexed disk;
+  std::vector<std::size_t> face;
+  for (std::size_t i = 0; i < 300; ++i) {
+    const double a = 2 * M_PI * double(i) / 300;
+    disk.points.push_back({std::cos(a), std::sin(a), 0});
+    face.push_back(i);
+  }
+  disk.faces.push_back(face);
+  const fs::path p = file("disk.off", off(disk));
+  const std::vector<std::string> before = listing();
+  const Result r = run({"-o", (dir / "out.ply").string(), p.string()});
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+  EXPECT_NE(r.err.find("255"), std::string::npos) << r.err;
+  EXPECT_EQ(listing(), before);
+  const fs::path existing = file("existing.ply", "previous content\n");
+  EXPECT_NE(run({"-o", existing.string(), p.string()}).exit_code, 0);
+  EXPECT_EQ(read_text(existing), "previous content\n");
+  EXPECT_EQ(csv(p).size(), disk.points.size());  // CSV has no such limit
+}
+
 TEST_F(ToolTest, SummaryAndHelp)
 {
   const fs::path p = file("sphere.off", off(icosphere(2, 1)));
