@@ -177,14 +177,26 @@ Topology topology(const Halfedges_by_source& halfedges, const Polygon_range& pol
       t.isolated_points = true;
       continue;
     }
-    for (auto h = halfedges.begin(v); h != halfedges.end(v); ++h) {
-      for (auto g = h + 1; g != halfedges.end(v) && g->target == h->target; ++g) {
-        t.directed_edges_unique = false;
-        t.duplicate_polygons |= is_same_polygon(polygons[h->face], polygons[g->face], v, 1);
+    // Polygons on one edge are compared pairwise; more than a few are taken for
+    // duplicates, which leaves the decision to CGAL's merge (a pairwise comparison
+    // of thousands of polygons on one edge would take long).
+    const std::ptrdiff_t few = 8;
+    for (auto h = halfedges.begin(v); h != halfedges.end(v);) {
+      const auto [same, same_last] = halfedges.between(v, h->target);
+      const auto [opposite, opposite_last] = halfedges.between(h->target, v);
+      t.directed_edges_unique &= same_last - same == 1;
+      if (same_last - same > few || opposite_last - opposite > few) {
+        t.duplicate_polygons = true;
+      } else {
+        for (auto f = same; f != same_last; ++f) {
+          for (auto g = f + 1; g != same_last; ++g)
+            t.duplicate_polygons |= is_same_polygon(polygons[f->face], polygons[g->face], v, 1);
+          if (v < h->target)
+            for (auto g = opposite; g != opposite_last; ++g)
+              t.duplicate_polygons |= is_same_polygon(polygons[f->face], polygons[g->face], v, -1);
+        }
       }
-      if (v < h->target)
-        for (auto [g, last] = halfedges.between(h->target, v); g != last; ++g)
-          t.duplicate_polygons |= is_same_polygon(polygons[h->face], polygons[g->face], v, -1);
+      h = same_last;
     }
     if (!t.directed_edges_unique)
       continue;  // a fan is not well defined
