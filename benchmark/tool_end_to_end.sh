@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # The `curvature` tool end to end (read + estimate + summary or CSV write), single
 # thread, on a generated ASCII OFF of a smooth height field: an N x N grid
-# (N = 1000: 1M vertices, 2M triangles, about 72 MB), coordinates with 9
+# (N = 1000: 1M vertices, 2M triangles, 82 MB), coordinates with 9
 # significant digits. Two files: the clean grid, which needs no repair, and a copy
 # with one face flipped, which goes through the soup repair. Each is run without
 # and with `-o FILE.csv` under /usr/bin/time -v (Debian package `time`); the
