@@ -27,6 +27,8 @@ PACKAGES=(
 if [ "${1:-}" = "--report" ]; then
   # Plots and headless renders of benchmark/REPORT.md (/usr/bin/python3's matplotlib, Agg backend).
   PACKAGES+=(python3 python3-matplotlib python3-numpy)
+  # /usr/bin/time -v: wall time and peak memory of benchmark/tool_end_to_end.sh.
+  PACKAGES+=(time)
 fi
 
 is_installed() {

@@ -824,6 +824,31 @@ TEST_F(ToolTest, PlyOutputReadsBack)
   EXPECT_EQ(int((*status)[last]), 2);
 }
 
+// An error while the output is written (a face the PLY's uchar count cannot hold)
+// leaves no file, not even the temporary one, and keeps an existing output.
+TEST_F(ToolTest, ErrorWhileWritingLeavesNoFile)
+{
+  Indexed disk;
+  std::vector<std::size_t> face;
+  for (std::size_t i = 0; i < 300; ++i) {
+    const double a = 2 * M_PI * double(i) / 300;
+    disk.points.push_back({std::cos(a), std::sin(a), 0});
+    face.push_back(i);
+  }
+  disk.faces.push_back(face);
+  const fs::path p = file("disk.off", off(disk));
+  const std::vector<std::string> before = listing();
+  const Result r = run({"-o", (dir / "out.ply").string(), p.string()});
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+  EXPECT_NE(r.err.find("255"), std::string::npos) << r.err;
+  EXPECT_EQ(listing(), before);
+  const fs::path existing = file("existing.ply", "previous content\n");
+  EXPECT_NE(run({"-o", existing.string(), p.string()}).exit_code, 0);
+  EXPECT_EQ(read_text(existing), "previous content\n");
+  EXPECT_EQ(csv(p).size(), disk.points.size());  // CSV has no such limit
+}
+
 TEST_F(ToolTest, SummaryAndHelp)
 {
   const fs::path p = file("sphere.off", off(icosphere(2, 1)));
@@ -849,6 +874,126 @@ TEST_F(ToolTest, RepairIsReportedOnStderr)
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_NE(r.err.find("repaired"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("re-oriented"), std::string::npos) << r.err;
+}
+
+// A soup that needs no repair takes the tool's direct path, the others CGAL's repair:
+// each defect the direct path's check looks for is repaired (and said on stderr), and
+// the rows of the vertices the files share are the clean file's, byte for byte.
+class RepairPathTest : public ToolTest
+{
+public:
+  struct Csv
+  {
+    std::vector<std::string> lines;  // header, then a row per vertex
+    std::string err;
+  };
+
+  Csv csv_lines(const fs::path& input, const std::string& method)
+  {
+    const fs::path output = dir / "lines.csv";
+    fs::remove(output);
+    const Result r = run({"-m", method, "-o", output.string(), input.string()});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    Csv c{{}, r.err};
+    std::istringstream in(read_text(output));
+    for (std::string line; std::getline(in, line);)
+      c.lines.push_back(line);
+    return c;
+  }
+
+  // The variant's note contains `note`; its first rows are the clean mesh's.
+  void expect_repaired_like(const Indexed& clean, const Indexed& variant, const std::string& note)
+  {
+    for (const std::string method : {"paraboloid", "gauss-map", "jet"}) {
+      const Csv a = csv_lines(file("clean.off", off(clean)), method);
+      const Csv b = csv_lines(file("variant.off", off(variant)), method);
+      EXPECT_TRUE(a.err.empty()) << method << ": " << a.err;
+      EXPECT_NE(b.err.find(note), std::string::npos) << method << ", " << note << ": " << b.err;
+      ASSERT_EQ(a.lines.size(), clean.points.size() + 1);
+      ASSERT_EQ(b.lines.size(), variant.points.size() + 1);
+      for (std::size_t i = 0; i < a.lines.size(); ++i)
+        EXPECT_EQ(a.lines[i], b.lines[i]) << method << ", " << note << ", line " << i;
+    }
+  }
+};
+
+TEST_F(RepairPathTest, CleanInputSaysNothing)
+{
+  const Result r = run({"-o", (dir / "out.csv").string(), file("sphere.off", off(icosphere(2, 1))).string()});
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_TRUE(r.err.empty()) << r.err;
+}
+
+TEST_F(RepairPathTest, FlippedFace)
+{
+  const Indexed clean = icosphere(2, 1);
+  Indexed flipped = clean;
+  std::swap(flipped.faces[7][0], flipped.faces[7][1]);
+  expect_repaired_like(clean, flipped, "re-oriented 1 faces");
+}
+
+TEST_F(RepairPathTest, DuplicatePoint)
+{
+  const Indexed clean = icosphere(2, 1);
+  Indexed variant = clean;
+  // A copy of vertex 5 at the end, used by one of vertex 5's faces: its row is vertex 5's.
+  variant.points.push_back(clean.points[5]);
+  for (auto& f : variant.faces)
+    if (std::find(f.begin(), f.end(), 5) != f.end()) {
+      std::replace(f.begin(), f.end(), std::size_t(5), clean.points.size());
+      break;
+    }
+  expect_repaired_like(clean, variant, "merged 1 duplicate points");
+  const Csv b = csv_lines(file("variant.off", off(variant)), "paraboloid");
+  ASSERT_EQ(b.lines.size(), variant.points.size() + 1);
+  EXPECT_EQ(b.lines.back(), b.lines[6]);
+}
+
+TEST_F(RepairPathTest, DegenerateAndDuplicateFaces)
+{
+  const Indexed clean = icosphere(2, 1);
+  Indexed repeated_index = clean;
+  repeated_index.faces.push_back({3, 3, 4});
+  expect_repaired_like(clean, repeated_index, "dropped 1 degenerate or duplicate faces");
+  Indexed two_vertices = clean;
+  two_vertices.faces.push_back({3, 4});
+  expect_repaired_like(clean, two_vertices, "dropped 1 degenerate or duplicate faces");
+  // A separate triangle twice, in opposite orientations: each of its edges is in two faces
+  // of opposite orientations, which the edge check alone would accept.
+  Indexed pillow = clean;
+  const std::size_t n = clean.points.size();
+  pillow.points.insert(pillow.points.end(), {{3, 0, 0}, {4, 0, 0}, {3, 1, 0}});
+  pillow.faces.push_back({n, n + 1, n + 2});
+  pillow.faces.push_back({n + 2, n + 1, n});
+  expect_repaired_like(clean, pillow, "dropped 1 degenerate or duplicate faces");
+}
+
+TEST_F(RepairPathTest, IsolatedVertex)
+{
+  const Indexed clean = icosphere(2, 1);
+  Indexed variant = clean;
+  variant.points.push_back({3, 3, 3});
+  expect_repaired_like(clean, variant, "1 of the file's vertices are in no face");
+  const Csv b = csv_lines(file("variant.off", off(variant)), "paraboloid");
+  ASSERT_FALSE(b.lines.empty());
+  EXPECT_EQ(b.lines.back(), "nan,nan,nan,nan,nan,nan,nan,nan,nan,nan,failed");
+}
+
+TEST_F(RepairPathTest, NonManifoldVertex)
+{
+  // Two closed tetrahedra sharing one vertex: every edge is in two faces of opposite
+  // orientations, but the faces around the shared vertex are two fans.
+  Indexed m = tetrahedron();
+  Indexed other = tetrahedron(1, 1);  // its vertex 0 is m's vertex 1
+  m.points.insert(m.points.end(), other.points.begin() + 1, other.points.end());
+  for (auto face : other.faces) {
+    for (auto& i : face)
+      i = i == 0 ? 1 : i + 3;
+    m.faces.push_back(face);
+  }
+  const Result r = run({"-o", (dir / "out.csv").string(), file("bowtie.off", off(m)).string()});
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.err.find("duplicated 1 non-manifold vertices"), std::string::npos) << r.err;
 }
 
 // ---------------------------------------------------------------------------

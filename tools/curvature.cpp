@@ -29,6 +29,7 @@
 #include <new>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace ce_tool;
@@ -40,14 +41,17 @@ int run_surface(const Options& o)
   const Soup soup = read_input(o.input);
   std::vector<V> file_to_mesh;
   Mesh mesh = build_mesh(soup, file_to_mesh);
-  double seconds = 0;
-  const std::vector<Row> rows = estimate(o, mesh, file_to_mesh, seconds);
+  const Surface_estimates rows = estimate(o, mesh, std::move(file_to_mesh));
   if (!o.output.empty()) {
-    const bool csv = lower_extension(o.output) == ".csv";
-    write_file_atomically(o.output, csv ? surface_csv_text(rows) : ply_text(soup, rows, o.color_by));
+    Atomic_file out(o.output);
+    if (lower_extension(o.output) == ".csv")
+      write_surface_csv(out, rows);
+    else
+      write_ply(out, soup, rows, o.color_by);
+    out.commit();
     return 0;
   }
-  print_surface_summary(o, soup, mesh, rows, seconds);
+  print_surface_summary(o, soup, mesh, rows);
   return 0;
 }
 
@@ -57,7 +61,9 @@ int run_tetrahedral(const Options& o)
   double seconds = 0;
   const std::vector<Tetrahedral_row> rows = estimate_tetrahedral(o, input, seconds);
   if (!o.output.empty()) {  // CSV: parse_arguments refuses PLY for tetrahedral input
-    write_file_atomically(o.output, tetrahedral_csv_text(rows));
+    Atomic_file out(o.output);
+    write_tetrahedral_csv(out, rows);
+    out.commit();
     return 0;
   }
   print_tetrahedral_summary(o, input, rows, seconds);

@@ -21,6 +21,7 @@
 #include <fstream>
 #include <string>
 #include <unistd.h>
+#include <utility>
 #include <vector>
 
 using namespace ce_tool;
@@ -34,13 +35,13 @@ void write_bytes(const std::string& path, const std::uint8_t* data, std::size_t 
 }
 
 // Rows: one per vertex of the file; not estimable rows are NaN.
-template <typename Row_type>
-void check_rows(const std::vector<Row_type>& rows, std::size_t vertices)
+template <typename Rows>
+void check_rows(const Rows& rows, std::size_t vertices)
 {
   if (rows.size() != vertices)
     __builtin_trap();
-  for (const Row_type& r : rows)
-    if (r.status == CE::Estimation_status::not_estimable && !std::isnan(r.mean))
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    if (rows[i].status == CE::Estimation_status::not_estimable && !std::isnan(rows[i].mean))
       __builtin_trap();
 }
 
@@ -52,8 +53,7 @@ void run_surface_input(const std::string& path)
   std::vector<V> file_to_mesh;
   Silence_cerr silence;  // repair notes
   Mesh mesh = build_mesh(soup, file_to_mesh);
-  double seconds = 0;
-  check_rows(estimate(o, mesh, file_to_mesh, seconds), soup.points.size());
+  check_rows(estimate(o, mesh, std::move(file_to_mesh)), soup.points.size());
 }
 
 void run_tetrahedral_input(const std::string& path)

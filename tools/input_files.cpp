@@ -5,7 +5,6 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <system_error>
 
 namespace ce_tool {
@@ -35,13 +34,13 @@ std::uintmax_t check_readable(const std::string& path)
 
 std::string read_text_file(const std::string& path)
 {
-  check_readable(path);
+  const std::uintmax_t bytes = check_readable(path);
   std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad())
+  std::string text(static_cast<std::size_t>(bytes), '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  if (in.bad() || static_cast<std::uintmax_t>(in.gcount()) != bytes)
     fail("cannot read '" + path + "': read error");
-  return text.str();
+  return text;
 }
 
 } // namespace ce_tool

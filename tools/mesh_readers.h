@@ -22,6 +22,7 @@
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -31,6 +32,17 @@ struct Read_error : std::runtime_error
 {
   using std::runtime_error::runtime_error;
 };
+
+// How an item is named in messages: a string, or a function that makes one, called
+// only when a message needs it (a large file's items then build no strings).
+template <typename What>
+std::string describe(const What& what)
+{
+  if constexpr (std::is_invocable_v<const What&>)
+    return what();
+  else
+    return std::string(what);
+}
 
 // Whitespace-separated tokens; '#' starts a comment that runs to the end of the line.
 class Scanner
@@ -63,10 +75,11 @@ public:
     return pos_ < text_.size() && !is_space(text_[pos_]);
   }
 
-  std::string_view token(const std::string& what)
+  template <typename What>
+  std::string_view token(const What& what)
   {
     if (!more())
-      fail("the file ends where " + what + " was expected");
+      fail("the file ends where " + describe(what) + " was expected");
     const std::size_t start = pos_;
     while (pos_ < text_.size() && !is_space(text_[pos_]) && text_[pos_] != '#')
       ++pos_;
@@ -80,33 +93,36 @@ public:
       fail("expected '" + std::string(keyword) + "', got '" + printable(word) + "'");
   }
 
-  long long integer(const std::string& what, long long min_value, long long max_value)
+  template <typename What>
+  long long integer(const What& what, long long min_value, long long max_value)
   {
     const std::string_view word = token(what);
     long long value = 0;
     const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
     if (ec != std::errc() || end != word.data() + word.size())
-      fail("expected an integer for " + what + ", got '" + printable(word) + "'");
+      fail("expected an integer for " + describe(what) + ", got '" + printable(word) + "'");
     if (value < min_value || value > max_value)
-      fail(what + " is " + std::to_string(value) + ", out of the range " + std::to_string(min_value) + ".." +
-           std::to_string(max_value));
+      fail(describe(what) + " is " + std::to_string(value) + ", out of the range " + std::to_string(min_value) +
+           ".." + std::to_string(max_value));
     return value;
   }
 
   // A count of items of `tokens_per_item` tokens each: each takes at least two
   // bytes a token (the token and a separator), so the rest of the file bounds it,
   // and so the memory reserved for the items.
-  std::size_t count(const std::string& what, std::size_t tokens_per_item, long long max_value = LLONG_MAX)
+  template <typename What>
+  std::size_t count(const What& what, std::size_t tokens_per_item, long long max_value = LLONG_MAX)
   {
-    const long long n = integer("the number of " + what, 0, max_value);
+    const long long n = integer([&] { return "the number of " + describe(what); }, 0, max_value);
     const std::size_t bound = (text_.size() - pos_ + 1) / (2 * tokens_per_item);
     if (static_cast<unsigned long long>(n) > bound)
-      fail("the file declares " + std::to_string(n) + " " + what + ", more than the rest of the file (" +
+      fail("the file declares " + std::to_string(n) + " " + describe(what) + ", more than the rest of the file (" +
            std::to_string(text_.size() - pos_) + " bytes) can hold");
     return static_cast<std::size_t>(n);
   }
 
-  double real(const std::string& what)
+  template <typename What>
+  double real(const What& what)
   {
     std::string_view word = token(what);
     const std::string_view original = word;
@@ -115,26 +131,27 @@ public:
     double value = 0;
     const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
     if (ec == std::errc::result_out_of_range)
-      fail(what + " '" + printable(original) + "' is out of the range of double");
+      fail(describe(what) + " '" + printable(original) + "' is out of the range of double");
     if (ec != std::errc() || end != word.data() + word.size())
-      fail("expected a number for " + what + ", got '" + printable(original) + "'");
+      fail("expected a number for " + describe(what) + ", got '" + printable(original) + "'");
     if (!std::isfinite(value))
-      fail(what + " is not finite ('" + printable(original) + "')");
+      fail(describe(what) + " is not finite ('" + printable(original) + "')");
     return value;
   }
 
   // Trailing numbers on the current line: between min_count and max_count of them.
-  void skip_numbers_on_line(const std::string& what, int min_count, int max_count)
+  template <typename What>
+  void skip_numbers_on_line(const What& what, int min_count, int max_count)
   {
     int n = 0;
     while (more_on_line()) {
       if (n == max_count)
-        fail("too many values on the line of " + what);
-      real("a value of " + what);
+        fail("too many values on the line of " + describe(what));
+      real([&] { return "a value of " + describe(what); });
       ++n;
     }
     if (n < min_count)
-      fail("too few values on the line of " + what);
+      fail("too few values on the line of " + describe(what));
   }
 
   [[noreturn]] void fail(const std::string& message) const
@@ -166,18 +183,56 @@ private:
   std::size_t line_ = 1;
 };
 
+// Polygons in two flat arrays: the vertex indices of all polygons one after the
+// other, and where each polygon starts (a vector per polygon would cost more than
+// its three indices).
+class Flat_polygons
+{
+public:
+  // The vertex indices of one polygon.
+  struct Polygon
+  {
+    const std::size_t* first;
+    std::size_t count;
+    std::size_t size() const { return count; }
+    std::size_t operator[](std::size_t k) const { return first[k]; }
+    const std::size_t* begin() const { return first; }
+    const std::size_t* end() const { return first + count; }
+  };
+
+  std::size_t size() const { return start_.size() - 1; }
+  bool empty() const { return size() == 0; }
+  Polygon operator[](std::size_t f) const { return {indices_.data() + start_[f], start_[f + 1] - start_[f]}; }
+
+  void reserve(std::size_t polygons, std::size_t indices)
+  {
+    start_.reserve(polygons + 1);
+    indices_.reserve(indices);
+  }
+  // Appends an index to the polygon being built, which end_polygon() closes.
+  void add_index(std::size_t index) { indices_.push_back(index); }
+  void end_polygon() { start_.push_back(indices_.size()); }
+
+private:
+  std::vector<std::size_t> start_{0};
+  std::vector<std::size_t> indices_;
+};
+
+template <typename Point3>
 struct Polygon_soup_data
 {
-  std::vector<std::array<double, 3>> points;
-  std::vector<std::vector<std::size_t>> faces;
+  std::vector<Point3> points;
+  Flat_polygons faces;
 };
 
 // OFF as Geomview defines it and CGAL writes it: a header [ST][C][N]OFF, the
 // counts of vertices, faces and (optionally) edges, one vertex a line (x y z, then
 // the normal, colour and texture coordinates the header announces), one face a line
 // (n, n indices from 0, then an optional colour of up to 4 values).
-// 4OFF, nOFF (other dimensions) and binary OFF are refused.
-inline Polygon_soup_data read_off(std::string_view text)
+// 4OFF, nOFF (other dimensions) and binary OFF are refused. Point3 is built from
+// {x, y, z}.
+template <typename Point3 = std::array<double, 3>>
+Polygon_soup_data<Point3> read_off(std::string_view text)
 {
   Scanner in(text);
   std::string_view header = in.token("the OFF header");
@@ -204,28 +259,28 @@ inline Polygon_soup_data read_off(std::string_view text)
   if (in.more_on_line())
     in.integer("the number of edges", 0, LLONG_MAX);  // unused, and optional in practice
 
-  Polygon_soup_data soup;
+  Polygon_soup_data<Point3> soup;
   soup.points.reserve(vertices);
   for (std::size_t v = 0; v < vertices; ++v) {
-    const std::string what = "vertex " + std::to_string(v);
-    std::array<double, 3> p;
-    for (double& c : p)
-      c = in.real("a coordinate of " + what);
+    const auto what = [v] { return "vertex " + std::to_string(v); };
+    const auto coordinate = [&] { return "a coordinate of " + what(); };
+    const double x = in.real(coordinate);
+    const double y = in.real(coordinate);
+    const double z = in.real(coordinate);
     in.skip_numbers_on_line(what, extra_min, extra_max);
-    soup.points.push_back(p);
+    soup.points.push_back(Point3{x, y, z});
   }
-  soup.faces.reserve(faces);
+  soup.faces.reserve(faces, 3 * faces);
   const long long last = static_cast<long long>(vertices) - 1;
   for (std::size_t f = 0; f < faces; ++f) {
-    const std::string what = "face " + std::to_string(f);
-    const std::size_t n = in.count("vertices of " + what, 1, static_cast<long long>(vertices));
+    const auto what = [f] { return "face " + std::to_string(f); };
+    const std::size_t n = in.count([&] { return "vertices of " + what(); }, 1, static_cast<long long>(vertices));
     if (n == 0)
-      in.fail(what + " has no vertices");
-    std::vector<std::size_t> face(n);
-    for (std::size_t& index : face)
-      index = static_cast<std::size_t>(in.integer("a vertex index of " + what, 0, last));
+      in.fail(what() + " has no vertices");
+    for (std::size_t k = 0; k < n; ++k)
+      soup.faces.add_index(static_cast<std::size_t>(in.integer([&] { return "a vertex index of " + what(); }, 0, last)));
+    soup.faces.end_polygon();
     in.skip_numbers_on_line(what, 0, 4);
-    soup.faces.push_back(std::move(face));
   }
   // Whatever follows the declared faces is ignored, as by Geomview and CGAL: some
   // files (CGAL's data/meshes/prim.off) hold more faces than their header declares.

@@ -21,12 +21,13 @@ void print_range(const char* name, std::vector<double> values)
 }
 
 // The summary's lines after the input's: time, ranges of H and K, status counts.
-template <typename Row_type>
-void print_estimates(const std::vector<Row_type>& rows, std::size_t vertices, double seconds)
+template <typename Rows>
+void print_estimates(const Rows& rows, std::size_t vertices, double seconds)
 {
   std::size_t ok = 0, widened = 0, fallback = 0, failed = 0;
   std::vector<double> H, K;
-  for (const Row_type& r : rows) {
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const auto r = rows[i];
     switch (r.status) {
       case CE::Estimation_status::ok: ++ok; break;
       case CE::Estimation_status::widened: ++widened; break;
@@ -50,14 +51,13 @@ void print_estimates(const std::vector<Row_type>& rows, std::size_t vertices, do
 
 } // namespace
 
-void print_surface_summary(const Options& o, const Soup& soup, const Mesh& mesh, const std::vector<Row>& rows,
-                           double seconds)
+void print_surface_summary(const Options& o, const Soup& soup, const Mesh& mesh, const Surface_estimates& rows)
 {
   std::cout << "input: " << o.input << '\n'
             << "vertices: " << soup.points.size() << " in the file (" << num_vertices(mesh) << " in the mesh, "
             << num_faces(mesh) << " faces)\n"
             << "method: " << o.method_name << '\n';
-  print_estimates(rows, num_vertices(mesh), seconds);
+  print_estimates(rows, num_vertices(mesh), rows.seconds);
 }
 
 void print_tetrahedral_summary(const Options& o, const Tetrahedral_input& input,

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <limits>
+#include <utility>
 
 namespace ce_tool {
 
@@ -48,34 +49,31 @@ void run_estimator(const Options& o, const Mesh& mesh,
 
 } // namespace
 
-std::vector<Row> estimate(const Options& o, Mesh& mesh, const std::vector<V>& file_to_mesh, double& seconds)
+Row Surface_estimates::operator[](std::size_t i) const
 {
-  auto H = mesh.add_property_map<V, double>("v:ce_H").first;
-  auto K = mesh.add_property_map<V, double>("v:ce_K").first;
-  auto pcd = mesh.add_property_map<V, CE::Principal_curvatures_and_directions<Kernel>>("v:ce_pcd").first;
-  auto status = mesh.add_property_map<V, CE::Estimation_status>("v:ce_status", CE::Estimation_status::not_estimable).first;
+  const V v = file_to_mesh[i];
+  if (v == V() || status[v] == CE::Estimation_status::not_estimable)
+    return failed_row();
+  const auto& c = pcd[v];
+  return Row{c.max_curvature, c.min_curvature, H[v], K[v],
+             {c.max_direction.x(), c.max_direction.y(), c.max_direction.z()},
+             {c.min_direction.x(), c.min_direction.y(), c.min_direction.z()},
+             status[v]};
+}
 
-  seconds = 0;
+Surface_estimates estimate(const Options& o, Mesh& mesh, std::vector<V> file_to_mesh)
+{
+  Surface_estimates e;
+  e.H = mesh.add_property_map<V, double>("v:ce_H").first;
+  e.K = mesh.add_property_map<V, double>("v:ce_K").first;
+  e.pcd = mesh.add_property_map<V, CE::Principal_curvatures_and_directions<Kernel>>("v:ce_pcd").first;
+  e.status = mesh.add_property_map<V, CE::Estimation_status>("v:ce_status", CE::Estimation_status::not_estimable).first;
+  e.file_to_mesh = std::move(file_to_mesh);
   if (!is_empty(mesh))
-    seconds = run_with_threads(o.threads, [&](auto tag) { run_estimator<decltype(tag)>(o, mesh, H, K, pcd, status); });
-
-  std::vector<Row> rows(file_to_mesh.size(), failed_row());
-  for (std::size_t i = 0; i < file_to_mesh.size(); ++i) {
-    const V v = file_to_mesh[i];
-    if (v == V() || status[v] == CE::Estimation_status::not_estimable)
-      continue;
-    const auto& c = pcd[v];
-    Row r{c.max_curvature, c.min_curvature, H[v], K[v],
-          {c.max_direction.x(), c.max_direction.y(), c.max_direction.z()},
-          {c.min_direction.x(), c.min_direction.y(), c.min_direction.z()},
-          status[v]};
-    rows[i] = r;
-  }
-  mesh.remove_property_map(H);
-  mesh.remove_property_map(K);
-  mesh.remove_property_map(pcd);
-  mesh.remove_property_map(status);
-  return rows;
+    e.seconds = run_with_threads(o.threads, [&](auto tag) {
+      run_estimator<decltype(tag)>(o, mesh, e.H, e.K, e.pcd, e.status);
+    });
+  return e;
 }
 
 } // namespace ce_tool

@@ -11,6 +11,7 @@
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 
 #include <array>
+#include <cstddef>
 #include <vector>
 
 namespace ce_tool {
@@ -27,10 +28,23 @@ struct Row
   }
 };
 
-// The rows of the file's vertices (file_to_mesh from build_mesh), a failed row
-// where a vertex is in no face or not estimable; `seconds` is the estimator's
-// time. The estimator's output maps are added to `mesh` and removed after.
-std::vector<Row> estimate(const Options& o, Mesh& mesh, const std::vector<V>& file_to_mesh, double& seconds);
+// The estimates at the file's vertices, read from the mesh's property maps:
+// rows[i] is the row of the file's vertex i, failed where the vertex is in no face
+// (file_to_mesh from build_mesh) or not estimable.
+struct Surface_estimates
+{
+  Mesh::Property_map<V, double> H, K;
+  Mesh::Property_map<V, CE::Principal_curvatures_and_directions<Kernel>> pcd;
+  Mesh::Property_map<V, CE::Estimation_status> status;
+  std::vector<V> file_to_mesh;
+  double seconds = 0;  // the estimator's time
+
+  std::size_t size() const { return file_to_mesh.size(); }
+  Row operator[](std::size_t i) const;
+};
+
+// Runs the estimator --method picks; its outputs are property maps added to `mesh`.
+Surface_estimates estimate(const Options& o, Mesh& mesh, std::vector<V> file_to_mesh);
 
 } // namespace ce_tool
 

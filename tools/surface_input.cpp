@@ -97,21 +97,16 @@ Soup read_input(const std::string& path)
 
   Soup soup;
   if (ext == ".off") {
-    const Polygon_soup_data data = read_strictly(path, [](const std::string& text) {
-      return read_off(text);
-    });
-    soup.points.reserve(data.points.size());
-    for (const auto& p : data.points)
-      soup.points.emplace_back(p[0], p[1], p[2]);
-    soup.polygons = data.faces;
+    soup = read_strictly(path, [](const std::string& text) { return read_off<Point>(text); });
   } else {
     const std::uintmax_t bytes = check_readable(path);
     if (ext == ".ply")
       check_ply_header(path, bytes);
+    std::vector<std::vector<std::size_t>> polygons;
     bool ok = false;
     try {
       Silence_cerr silence;
-      ok = CGAL::IO::read_polygon_soup(path, soup.points, soup.polygons);
+      ok = CGAL::IO::read_polygon_soup(path, soup.points, polygons);
     } catch (const std::bad_alloc&) {
       fail("malformed file '" + path + "': its header asks for more memory than available");
     } catch (const std::exception& e) {
@@ -120,10 +115,15 @@ Soup read_input(const std::string& path)
     if (!ok)
       fail("malformed file '" + path + "': the " + ext.substr(1) +
            " reader failed (garbage, truncated, or invalid data)");
+    for (const std::vector<std::size_t>& polygon : polygons) {
+      for (std::size_t index : polygon)
+        soup.faces.add_index(index);
+      soup.faces.end_polygon();
+    }
   }
   if (soup.points.empty())
     fail("empty mesh '" + path + "': no vertices");
-  if (soup.polygons.empty())
+  if (soup.faces.empty())
     fail("empty mesh '" + path + "': no faces");
 
   for (std::size_t i = 0; i < soup.points.size(); ++i) {
@@ -131,8 +131,8 @@ Soup read_input(const std::string& path)
     if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
       fail("invalid file '" + path + "': vertex " + std::to_string(i) + " has a non-finite (NaN or infinite) coordinate");
   }
-  for (std::size_t f = 0; f < soup.polygons.size(); ++f)
-    for (std::size_t index : soup.polygons[f])
+  for (std::size_t f = 0; f < soup.faces.size(); ++f)
+    for (std::size_t index : soup.faces[f])
       if (index >= soup.points.size())
         fail("malformed file '" + path + "': face " + std::to_string(f) + " refers to vertex " +
              std::to_string(index) + " but the file has " + std::to_string(soup.points.size()) + " vertices");

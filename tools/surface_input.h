@@ -5,8 +5,8 @@
 #define CE_TOOLS_SURFACE_INPUT_H
 
 #include "kernel.h"
+#include "mesh_readers.h"
 
-#include <cstddef>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -14,13 +14,8 @@
 
 namespace ce_tool {
 
-using Polygon = std::vector<std::size_t>;
-
-struct Soup
-{
-  std::vector<Point> points;
-  std::vector<Polygon> polygons;
-};
+// The file's points and polygons (in flat arrays), in the file's order.
+using Soup = Polygon_soup_data<Point>;
 
 // CGAL's readers write diagnostics to std::cerr; the tool's contract is one line.
 struct Silence_cerr

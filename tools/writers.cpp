@@ -34,20 +34,22 @@ const char* status_name(CE::Estimation_status status)
 }
 
 // The header line, then a row per vertex: its values, then its status.
-template <typename Row_type>
-std::string csv_text(const char* header, const std::vector<Row_type>& rows)
+template <typename Rows>
+void write_csv(Atomic_file& file, const char* header, const Rows& rows)
 {
-  std::string out = std::string(header) + "\n";
-  out.reserve(rows.size() * 16 * (Row_type().values().size() + 1) + out.size());
-  for (const Row_type& r : rows) {
+  std::string& out = file.text();
+  out += header;
+  out += '\n';
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const auto r = rows[i];
     for (double x : r.values()) {
       put_double(out, x);
       out += ',';
     }
     out += status_name(r.status);
     out += '\n';
+    file.flush_if_full();
   }
-  return out;
 }
 
 double quantity(const Row& r, Quantity q)
@@ -90,37 +92,41 @@ void put_binary(std::string& out, double x)
 
 } // namespace
 
-std::string surface_csv_text(const std::vector<Row>& rows)
+void write_surface_csv(Atomic_file& out, const Surface_estimates& rows)
 {
-  return csv_text("k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,status", rows);
+  write_csv(out, "k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,status", rows);
 }
 
-std::string tetrahedral_csv_text(const std::vector<Tetrahedral_row>& rows)
+void write_tetrahedral_csv(Atomic_file& out, const std::vector<Tetrahedral_row>& rows)
 {
-  return csv_text("k_1,k_2,k_3,mean,gaussian,status", rows);
+  write_csv(out, "k_1,k_2,k_3,mean,gaussian,status", rows);
 }
 
-std::string ply_text(const Soup& soup, const std::vector<Row>& rows, Quantity q)
+void write_ply(Atomic_file& file, const Soup& soup, const Surface_estimates& rows, Quantity q)
 {
   std::vector<double> magnitudes;
-  for (const Row& r : rows)
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const Row r = rows[i];
     if (r.status != CE::Estimation_status::not_estimable && std::isfinite(quantity(r, q)))
       magnitudes.push_back(std::abs(quantity(r, q)));
+  }
   double scale = 0;
   if (!magnitudes.empty()) {
     const std::size_t k = std::min(magnitudes.size() - 1, magnitudes.size() * 95 / 100);
     std::nth_element(magnitudes.begin(), magnitudes.begin() + k, magnitudes.end());
     scale = magnitudes[k];
   }
+  magnitudes = std::vector<double>();
 
   std::size_t faces = 0;
-  for (const Polygon& p : soup.polygons) {
-    if (p.size() > 255)
+  for (std::size_t f = 0; f < soup.faces.size(); ++f) {
+    const std::size_t n = soup.faces[f].size();
+    if (n > 255)
       fail("a face of the input has more than 255 vertices, which the PLY output does not support");
-    faces += p.size() >= 3;
+    faces += n >= 3;
   }
 
-  std::string out;
+  std::string& out = file.text();
   out += "ply\nformat binary_little_endian 1.0\n";
   out += "comment written by curvature: the vertices and faces of the input file, in its order\n";
   out += "comment status: 0 = ok, 1 = widened, 2 = failed (its curvature values are NaN), 3 = fallback\n";
@@ -136,7 +142,7 @@ std::string ply_text(const Soup& soup, const std::vector<Row>& rows, Quantity q)
   out += "end_header\n";
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const Point& p = soup.points[i];
-    const Row& r = rows[i];
+    const Row r = rows[i];
     for (double x : {p.x(), p.y(), p.z()})
       put_binary(out, x);
     for (double x : r.values())
@@ -144,8 +150,10 @@ std::string ply_text(const Soup& soup, const std::vector<Row>& rows, Quantity q)
     out += static_cast<char>(r.status);
     for (unsigned char c : colour(quantity(r, q), scale))
       out += static_cast<char>(c);
+    file.flush_if_full();
   }
-  for (const Polygon& p : soup.polygons) {
+  for (std::size_t f = 0; f < soup.faces.size(); ++f) {
+    const Flat_polygons::Polygon p = soup.faces[f];
     if (p.size() < 3)
       continue;
     out += static_cast<char>(p.size());
@@ -154,8 +162,8 @@ std::string ply_text(const Soup& soup, const std::vector<Row>& rows, Quantity q)
         fail("a vertex index does not fit the PLY output's int");
       put_le(out, static_cast<std::uint32_t>(index));
     }
+    file.flush_if_full();
   }
-  return out;
 }
 
 } // namespace ce_tool

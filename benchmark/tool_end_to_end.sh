@@ -1,0 +1,98 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# The `curvature` tool end to end (read + estimate + summary or CSV write), single
+# thread, on a generated ASCII OFF of a smooth height field: an N x N grid
+# (N = 1000: 1M vertices, 2M triangles, 82 MB), coordinates with 9
+# significant digits. Two files: the clean grid, which needs no repair, and a copy
+# with one face flipped, which goes through the soup repair. Each is run without
+# and with `-o FILE.csv` under /usr/bin/time -v (Debian package `time`); the
+# table gives the wall time and the peak resident memory per vertex.
+#   benchmark/tool_end_to_end.sh [CURVATURE_BINARY [N]]
+# Defaults: build/tools/curvature, N = 1000. The files go to a temporary
+# directory, removed at the end.
+set -euo pipefail
+
+tool="${1:-build/tools/curvature}"
+n="${2:-1000}"
+if [ ! -x "$tool" ]; then
+  echo "tool_end_to_end.sh: no executable '$tool' (build the target curvature first)" >&2
+  exit 1
+fi
+if [ ! -x /usr/bin/time ]; then
+  echo "tool_end_to_end.sh: /usr/bin/time is missing (apt-get install time)" >&2
+  exit 1
+fi
+
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+
+# z = 0.1 sin(3x) cos(2y) + 0.05 x y over [0, 1]^2, two triangles a cell, CCW seen
+# from +z. `flip` swaps two indices of the middle face: one inconsistently
+# oriented face.
+generate() {
+  python3 - "$n" "$1" "$2" <<'EOF'
+import math, sys
+n, path, flip = int(sys.argv[1]), sys.argv[2], sys.argv[3] == "flip"
+h = 1.0 / (n - 1)
+with open(path, "w") as out:
+    out.write("OFF\n%d %d 0\n" % (n * n, 2 * (n - 1) * (n - 1)))
+    lines = []
+    for j in range(n):
+        y = j * h
+        for i in range(n):
+            x = i * h
+            z = 0.1 * math.sin(3 * x) * math.cos(2 * y) + 0.05 * x * y
+            lines.append("%.9g %.9g %.9g\n" % (x, y, z))
+        if len(lines) > 100000:
+            out.write("".join(lines))
+            lines = []
+    out.write("".join(lines))
+    lines = []
+    middle = (n - 1) * (n - 1)
+    face = 0
+    for j in range(n - 1):
+        for i in range(n - 1):
+            a = j * n + i
+            b, c, d = a + 1, a + n, a + n + 1
+            for f in ((a, b, d), (a, d, c)):
+                if flip and face == middle:
+                    f = (f[1], f[0], f[2])
+                lines.append("3 %d %d %d\n" % f)
+                face += 1
+        if len(lines) > 100000:
+            out.write("".join(lines))
+            lines = []
+    out.write("".join(lines))
+EOF
+}
+
+generate "$work/clean.off" clean
+generate "$work/flipped.off" flip
+vertices=$((n * n))
+echo "grid ${n}x${n}: $vertices vertices, $((2 * (n - 1) * (n - 1))) triangles, $(stat -c %s "$work/clean.off") bytes"
+echo "tool: $tool"
+printf '%-12s %-8s %10s %16s\n' file output "wall s" "peak bytes/vertex"
+
+# One run: wall seconds and peak RSS per vertex from time -v's report.
+measure() {
+  local input="$1" label="$2" output="$3"
+  shift 3
+  /usr/bin/time -v -o "$work/time.txt" "$tool" --threads 1 "$@" "$input" >"$work/stdout.txt" 2>"$work/stderr.txt" || {
+    echo "tool_end_to_end.sh: the tool failed on $input:" >&2
+    cat "$work/stderr.txt" >&2
+    exit 1
+  }
+  awk -v file="$label" -v output="$output" -v vertices="$vertices" '
+    /Elapsed \(wall clock\) time/ {
+      n = split($NF, t, ":"); wall = 0
+      for (i = 1; i <= n; ++i) wall = wall * 60 + t[i]
+    }
+    /Maximum resident set size/ { rss = $NF * 1024 }
+    END { printf "%-12s %-8s %10.2f %16.0f\n", file, output, wall, rss / vertices }' "$work/time.txt"
+}
+
+for name in clean flipped; do
+  measure "$work/$name.off" "$name" summary
+  measure "$work/$name.off" "$name" csv -o "$work/$name.csv"
+  rm -f "$work/$name.csv"
+done
