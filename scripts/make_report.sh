@@ -60,9 +60,9 @@ bash scripts/install_dependencies.sh --report
 step "configure and build ($build, Release, -j$jobs, CGAL: ${cgal_dir:-the system one})"
 mkdir -p "$build"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCE_BUILD_BENCHMARKS=ON -DCE_BUILD_TESTS=OFF \
-  -DCE_BUILD_EXAMPLES=OFF -DCE_BUILD_TOOLS=OFF "${cgal[@]}" > "$build/make_report_configure.log" 2>&1 ||
+  -DCE_BUILD_EXAMPLES=OFF -DCE_BUILD_TOOLS=ON "${cgal[@]}" > "$build/make_report_configure.log" 2>&1 ||
   { cat "$build/make_report_configure.log" >&2; exit 1; }
-cmake --build "$build" --target accuracy_runner bench_estimators -j "$jobs"
+cmake --build "$build" --target accuracy_runner bench_estimators curvature -j "$jobs"
 mkdir -p "$raw"
 
 # Speed first: it is the part that suffers most from a busy machine.
@@ -73,9 +73,15 @@ step "speed benchmarks"
 step "accuracy runner"
 "$build/benchmark/accuracy_runner" "${quick[@]}" --out "$raw"
 
+step "the tool end to end"
+grid=1000
+[ ${#quick[@]} -gt 0 ] && grid=200
+bash benchmark/tool_end_to_end.sh "$build/tools/curvature" "$grid" > "$raw/end_to_end.txt"
+
 elapsed=$(( $(date +%s) - start ))
 step "report"
 /usr/bin/python3 benchmark/make_report.py "${quick[@]}" --bench-json "$raw/speed.json" --accuracy-dir "$raw" \
+  --end-to-end "$raw/end_to_end.txt" \
   --build-dir "$build" --out-dir "$report_dir" \
   --duration "$((elapsed / 60)) min $((elapsed % 60)) s up to the report step (dependencies, build, benchmarks, accuracy)"
 step "done: $report_dir/REPORT.md"
