@@ -34,12 +34,8 @@ public:
   {
     vertices_.clear();
     ring_ends_.clear();
-    if constexpr (indexed)
-      if (++stamp_ == 0) {  // wrapped around: no stamp is current
-        std::fill(stamps_.begin(), stamps_.end(), 0);
-        stamp_ = 1;
-      }
-    add_if_new(center);
+    stamped_ = false;
+    vertices_.push_back(center);
     ring_ends_.push_back(1);
     center_on_border_ = false;
     has_face_.clear();
@@ -78,6 +74,9 @@ public:
     const std::size_t last = ring_ends_.back();
     // A neighbor of the last ring is on the ring before it, on it, or new.
     const std::size_t before = ring_ends_.size() >= 3 ? ring_ends_[ring_ends_.size() - 3] : 0;
+    if constexpr (indexed)
+      if (!stamped_)
+        stamp_gathered();
     for (std::size_t i = first; i < last; ++i) {
       const halfedge_descriptor h = halfedge(vertices_[i], g);
       for (halfedge_descriptor incoming : halfedges_around_target(h, g))
@@ -95,34 +94,58 @@ public:
   std::size_t ring_end(int r) const { return ring_ends_[r]; }
 
 private:
-  // Where a vertex descriptor is an index (Surface_mesh), the vertices gathered
-  // since the last start carry its stamp in stamps_ (grown on demand and kept from
-  // vertex to vertex). Elsewhere a linear search of vertices_ from `from` on:
+  // Where a vertex descriptor is an index (Surface_mesh), the rings beyond the
+  // first find the vertices gathered since the last start by their stamp in
+  // stamps_ (grown on demand and kept from vertex to vertex). Elsewhere, and on
+  // the 1-ring (a few neighbors, whose stamps would cost more in memory traffic
+  // than the search on a large mesh), a linear search of vertices_ from `from` on:
   // neighborhoods hold tens of vertices, and the 1-ring of a non-manifold vertex
   // may repeat a neighbor (a plain loop: std::find is not inlined and costs more
   // than the search). At 3 rings the search took a fifth of the time of
   // fit_degree(4).
   void add_if_new(vertex_descriptor w, std::size_t from = 0)
   {
-    if constexpr (indexed) {
-      const std::size_t i = static_cast<std::size_t>(w);
-      if (i >= stamps_.size())
-        stamps_.resize(i + i / 2 + 1, 0);
-      if (stamps_[i] == stamp_)
+    if constexpr (indexed)
+      if (stamped_) {
+        if (stamp(w))
+          vertices_.push_back(w);
         return;
-      stamps_[i] = stamp_;
-    } else {
-      const vertex_descriptor* const end = vertices_.data() + vertices_.size();
-      for (const vertex_descriptor* it = vertices_.data() + from; it != end; ++it)
-        if (*it == w)
-          return;
-    }
+      }
+    const vertex_descriptor* const end = vertices_.data() + vertices_.size();
+    for (const vertex_descriptor* it = vertices_.data() + from; it != end; ++it)
+      if (*it == w)
+        return;
     vertices_.push_back(w);
+  }
+
+  // A new stamp on the vertices gathered so far: the first extend since start.
+  void stamp_gathered()
+  {
+    if (++stamp_ == 0) {  // wrapped around: no stamp is current
+      std::fill(stamps_.begin(), stamps_.end(), 0);
+      stamp_ = 1;
+    }
+    for (vertex_descriptor w : vertices_)
+      stamp(w);
+    stamped_ = true;
+  }
+
+  // Stamps w; false where it was already.
+  bool stamp(vertex_descriptor w)
+  {
+    const std::size_t i = static_cast<std::size_t>(w);
+    if (i >= stamps_.size())
+      stamps_.resize(i + i / 2 + 1, 0);
+    if (stamps_[i] == stamp_)
+      return false;
+    stamps_[i] = stamp_;
+    return true;
   }
 
   static constexpr bool indexed = std::is_convertible<vertex_descriptor, std::size_t>::value;
   std::vector<std::uint32_t> stamps_;
   std::uint32_t stamp_ = 0;
+  bool stamped_ = false;  // whether the gathered vertices carry stamp_ (indexed only)
   std::vector<vertex_descriptor> vertices_;
   std::vector<std::size_t> ring_ends_;
   std::vector<char> has_face_;  // per incoming halfedge of the center
