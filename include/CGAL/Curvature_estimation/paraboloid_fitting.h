@@ -136,7 +136,9 @@ private:
 /// test (b) and the fallback are as for degree 2, with condition thresholds of 100 and
 /// 1e5 times `max_condition_number`, up to `max_neighborhood_rings` rings or one ring
 /// more than the degree's. The degree-3 fit is solved again less the curvature's quartic
-/// term, as above.
+/// term, as above. The normal these fits read their curvatures in (the area-weighted one
+/// corrected by the fitted gradient, of order 3 and 4) is what `estimate_vertex_normals()`
+/// writes with the same `fit_degree`.
 ///
 /// **Widening.** A vertex whose normal equations are ill-conditioned (condition
 /// number above `max_condition_number`, which includes singular ones and
