@@ -81,7 +81,7 @@ std::size_t position(const Polygon& polygon, std::size_t v)
 
 // The index that follows (step 1) or precedes (step -1) `v` in the polygon.
 template <typename Polygon>
-std::size_t neighbour_in(const Polygon& polygon, std::size_t v, int step)
+std::size_t neighbor_in(const Polygon& polygon, std::size_t v, int step)
 {
   const std::size_t n = polygon.size();
   return polygon[(position(polygon, v) + n + std::size_t(step)) % n];
@@ -205,7 +205,7 @@ Topology topology(const Halfedges_by_source& halfedges, const Polygon_range& pol
     for (auto h = halfedges.begin(v); h != halfedges.end(v); ++h) {
       if (!halfedges.find(h->target, v))
         ++boundary;
-      if (!halfedges.find(v, neighbour_in(polygons[h->face], v, -1))) {
+      if (!halfedges.find(v, neighbor_in(polygons[h->face], v, -1))) {
         ++fan_starts;  // the polygon before h around v is missing: a fan starts at h
         start = h;
       }
@@ -216,7 +216,7 @@ Topology topology(const Halfedges_by_source& halfedges, const Polygon_range& pol
       const auto* opposite = halfedges.find(h->target, v);
       if (!opposite)
         break;
-      h = halfedges.find(v, neighbour_in(polygons[opposite->face], v, 1));
+      h = halfedges.find(v, neighbor_in(polygons[opposite->face], v, 1));
       if (h == start)
         break;
     }
