@@ -30,6 +30,7 @@
 #include <iostream>
 #include <limits>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace {
@@ -584,15 +585,19 @@ TEST(GraphCurvature, ClosedFormOfTiltedGraph)
   EXPECT_LE((gc.normal - Vec<3>(-1, 0, 1) / std::sqrt(2.0)).norm(), 1e-15);
 }
 
-template <int L>
+// F = 1: the fit with linear terms through the vertex; F = 0: with a constant
+// term too, on heights offset by a constant (the vertex is off the graph).
+template <int F, int L>
 void check_gradient_fit(std::uint32_t seed, double tolerance)
 {
   Random random(seed);
   double worst = 0;
   for (int trial = 0; trial < 60; ++trial) {
-    constexpr int unknowns = CEI::Taylor_fit<2, 1, L>::unknowns;
-    static_assert(unknowns == (L == 2 ? 5 : L == 3 ? 9 : 14), "2 gradient + 3 Hessian [+ 4 cubic [+ 5 quartic]] unknowns");
+    constexpr int unknowns = CEI::Taylor_fit<2, F, L>::unknowns;
+    static_assert(unknowns == (F == 0 ? 1 : 0) + (L == 2 ? 5 : L == 3 ? 9 : 14),
+                  "[1 constant +] 2 gradient + 3 Hessian [+ 4 cubic [+ 5 quartic]] unknowns");
     const int m = unknowns + 2 + trial % 10;
+    const double offset = F == 0 ? random.uniform(-1, 1) : 0.0;
     const Mat<2, 2> c = symmetric_from<2>(separated_eigenvalues<2>(random, -3, 3, 0.2), rotation2(random.uniform(0, pi)));
     const Vec<2> g = random.in_cube<2>();
     std::array<double, 4> e{}; // cubic coefficients of x^3, x^2 y, x y^2, y^3
@@ -605,14 +610,14 @@ void check_gradient_fit(std::uint32_t seed, double tolerance)
         coefficient = random.uniform(-2, 2);
     const auto height = [&](const Vec<2>& x) {
       const double u = x[0], v = x[1];
-      return g.dot(x) + 0.5 * x.dot(c * x) + e[0] * u * u * u + e[1] * u * u * v + e[2] * u * v * v + e[3] * v * v * v +
+      return offset + g.dot(x) + 0.5 * x.dot(c * x) + e[0] * u * u * u + e[1] * u * u * v + e[2] * u * v * v + e[3] * v * v * v +
              f[0] * u * u * u * u + f[1] * u * u * u * v + f[2] * u * u * v * v + f[3] * u * v * v * v + f[4] * v * v * v * v;
     };
     const std::vector<Vec<2>> xs = spread_stencil_2d(random, m, 0.3, 1.0);
     const Frame<3> frame = test_frame<3>(random, trial);
     const Vec<3> n = frame.normal();
     const Mat<3, 2> t = CEI::tangent_basis<3>(n);
-    CEI::Taylor_fit<2, 1, L> fit;
+    CEI::Taylor_fit<2, F, L> fit;
     add_samples(fit, xs, height, frame, t);
     ASSERT_TRUE(fit.solve(L == 4 ? 1e8 : 1e5)) << "trial " << trial << ", condition " << fit.condition_number();
 
@@ -628,20 +633,28 @@ void check_gradient_fit(std::uint32_t seed, double tolerance)
     // compute them in the fit's frame, with the exact coefficients).
     const CEI::Graph_curvature<3> gc = CEI::graph_curvature<3>(fit.hessian(), fit.gradient(), t, n);
     const Exact_graph_curvature exact = exact_graph_curvature(expected_hessian, expected_gradient, t, n);
-    check_graph_curvature(gc, exact, 10 * tolerance, L == 2 ? "Taylor_fit<2,1,2>" : L == 3 ? "Taylor_fit<2,1,3>" : "Taylor_fit<2,1,4>", trial);
+    const std::string name = "Taylor_fit<2," + std::to_string(F) + "," + std::to_string(L) + ">";
+    check_graph_curvature(gc, exact, 10 * tolerance, name.c_str(), trial);
     // ... and the normal is (n - T g) / l, which in the original frame is R (-g, 1) / l.
     Vec<3> upward;
     upward << -g, 1;
     EXPECT_LE((gc.normal - frame.rotation * upward / std::sqrt(1 + g.squaredNorm())).norm(), 10 * tolerance);
   }
-  std::cout << "Taylor_fit<2,1," << L << ">: max |gradient or Hessian error| " << worst << "\n";
+  std::cout << "Taylor_fit<2," << F << "," << L << ">: max |gradient or Hessian error| " << worst << "\n";
 }
 
-TEST(GradientFit, QuadraticRecoversGradientHessianAndCurvatures) { check_gradient_fit<2>(41, 1e-12); }
+TEST(GradientFit, QuadraticRecoversGradientHessianAndCurvatures) { check_gradient_fit<1, 2>(41, 1e-12); }
 
-TEST(GradientFit, CubicRecoversGradientHessianAndCurvatures) { check_gradient_fit<3>(42, 1e-11); }
+TEST(GradientFit, CubicRecoversGradientHessianAndCurvatures) { check_gradient_fit<1, 3>(42, 1e-11); }
 
-TEST(GradientFit, QuarticRecoversGradientHessianAndCurvatures) { check_gradient_fit<4>(44, 1e-9); }
+TEST(GradientFit, QuarticRecoversGradientHessianAndCurvatures) { check_gradient_fit<1, 4>(44, 1e-9); }
+
+TEST(ConstantTermFit, RecoversGradientHessianAndCurvaturesOfEveryDegreeOffTheVertex)
+{
+  check_gradient_fit<0, 2>(45, 1e-12);
+  check_gradient_fit<0, 3>(46, 1e-11);
+  check_gradient_fit<0, 4>(47, 1e-9);
+}
 
 TEST(GradientFit, SlopedPlaneGivesZeroCurvature)
 {

@@ -225,7 +225,7 @@ void hypersurface_paraboloid_fitting_curvatures(const TetrahedralComplex& comple
   using Fitter = internal::Tetrahedral_platelet_fitter<Stars>;
 
   const internal::Fit_parameters fit =
-    internal::curvature_fit_parameters(np, "hypersurface_paraboloid_fitting_curvatures", 3);
+    internal::curvature_fit_parameters(np, "hypersurface_paraboloid_fitting_curvatures", 3, false);
   if (fit.normal_method != Vertex_normal_method::quadric_fit && fit.normal_method != Vertex_normal_method::area_weighted)
     throw std::invalid_argument("hypersurface_paraboloid_fitting_curvatures: vertex_normal_method must be "
                                 "quadric_fit or area_weighted");

@@ -44,9 +44,9 @@ public:
   using Monge_fitting = CGAL::Monge_via_jet_fitting<Local_kernel>;
 
   Jet_fitter(const FaceGraph& g, VertexPointMap vpm, int jet_degree, int monge_degree, int rings, int max_rings,
-             double max_condition)
+             double max_condition, double ball_radius)
     : g_(&g), vpm_(vpm), jet_degree_(jet_degree), monge_degree_(monge_degree), rings_(rings), max_rings_(max_rings),
-      max_condition_(max_condition),
+      max_condition_(max_condition), ball_radius_(ball_radius),
       fallback_(g, vpm, Fit_parameters{Platelet_fit_settings(), Vertex_normal_method::quadric_fit})
   {}
 
@@ -83,46 +83,79 @@ private:
     const Eigen::Vector3d orientation = face_average_normal(v, *g_, vpm_, Vertex_normal_method::area_weighted);
     if (!center.allFinite() || !orientation.allFinite() || !(orientation.squaredNorm() > 0))
       return Surface_estimate();
-    const std::size_t needed = std::size_t(jet_degree_ + 1) * std::size_t(jet_degree_ + 2) / 2;
+    const int unknowns = (jet_degree_ + 1) * (jet_degree_ + 2) / 2;
 
     collector_.start(v, *g_);
+    Surface_estimate e;
+    if (ball_radius_ > 0) {
+      const auto squared_distance = [&](vertex_descriptor w) { return (point_in_double(vpm_, w) - center).squaredNorm(); };
+      const int growths = fit_in_growing_ball(
+        ball_radius_, unknowns,
+        [&](double radius) { return collector_.grow_ball(*g_, radius * radius, squared_distance); },
+        [&] { return collector_.ball_size(); },
+        [&] {
+          points_.clear();
+          for (std::size_t i = 0; i < collector_.vertices().size(); ++i)
+            if (collector_.inside_ball(i))
+              add_point(collector_.vertices()[i]);
+          return monge_fit(orientation, e);
+        });
+      return growths != 0 ? with_status(growths > 1 ? Estimation_status::widened : Estimation_status::ok, e)
+                          : Surface_estimate();
+    }
     for (int rings = 1; rings <= max_rings_; ++rings) {
       if (rings > 1 && !collector_.extend(*g_))
         break;
-      if (rings < rings_ || collector_.vertices().size() < needed)
+      if (rings < rings_ || collector_.vertices().size() < std::size_t(unknowns))
         continue;
       points_.clear();
-      for (vertex_descriptor w : collector_.vertices()) {
-        const Eigen::Vector3d p = point_in_double(vpm_, w);
-        if (p.allFinite())
-          points_.emplace_back(p.x(), p.y(), p.z());
-      }
-      if (points_.size() < needed)
-        continue;
-      Monge_fitting fitting;
-      typename Monge_fitting::Monge_form form =
-        fitting(points_.begin(), points_.end(), std::size_t(jet_degree_), std::size_t(monge_degree_));
-      if (!(fitting.condition_number() <= max_condition_))
-        continue;
-      form.comply_wrt_given_normal(Local_kernel::Vector_3(orientation.x(), orientation.y(), orientation.z()));
-      // CGAL's curvature is positive where the surface bends towards its
-      // normal: with the outward normal a convex surface has k < 0. This
-      // package's convention is the opposite, so max and min swap.
-      const auto to_eigen = [](const Local_kernel::Vector_3& d) { return Eigen::Vector3d(d.x(), d.y(), d.z()); };
-      const Surface_estimate e = Surface_estimate::from_principal(
-        rings > rings_ ? Estimation_status::widened : Estimation_status::ok, -form.principal_curvatures(1),
-        -form.principal_curvatures(0), to_eigen(form.minimal_principal_direction()),
-        to_eigen(form.maximal_principal_direction()), to_eigen(form.normal_direction()));
-      if (std::isfinite(e.max_curvature) && std::isfinite(e.min_curvature))
-        return e;
+      for (vertex_descriptor w : collector_.vertices())
+        add_point(w);
+      if (points_.size() >= std::size_t(unknowns) && monge_fit(orientation, e))
+        return with_status(rings > rings_ ? Estimation_status::widened : Estimation_status::ok, e);
     }
     return Surface_estimate();
+  }
+
+  void add_point(vertex_descriptor w)
+  {
+    const Eigen::Vector3d p = point_in_double(vpm_, w);
+    if (p.allFinite())
+      points_.emplace_back(p.x(), p.y(), p.z());
+  }
+
+  static Surface_estimate with_status(Estimation_status status, Surface_estimate e)
+  {
+    e.status = status;
+    return e;
+  }
+
+  // CGAL's fit of points_ (the vertex first), its normal oriented as
+  // `orientation`; false where its condition number exceeds max_condition_ or
+  // its curvatures are not finite.
+  bool monge_fit(const Eigen::Vector3d& orientation, Surface_estimate& e) const
+  {
+    Monge_fitting fitting;
+    typename Monge_fitting::Monge_form form =
+      fitting(points_.begin(), points_.end(), std::size_t(jet_degree_), std::size_t(monge_degree_));
+    if (!(fitting.condition_number() <= max_condition_))
+      return false;
+    form.comply_wrt_given_normal(Local_kernel::Vector_3(orientation.x(), orientation.y(), orientation.z()));
+    // CGAL's curvature is positive where the surface bends towards its
+    // normal: with the outward normal a convex surface has k < 0. This
+    // package's convention is the opposite, so max and min swap.
+    const auto to_eigen = [](const Local_kernel::Vector_3& d) { return Eigen::Vector3d(d.x(), d.y(), d.z()); };
+    e = Surface_estimate::from_principal(Estimation_status::ok, -form.principal_curvatures(1),
+                                         -form.principal_curvatures(0), to_eigen(form.minimal_principal_direction()),
+                                         to_eigen(form.maximal_principal_direction()), to_eigen(form.normal_direction()));
+    return std::isfinite(e.max_curvature) && std::isfinite(e.min_curvature);
   }
 
   const FaceGraph* g_;
   VertexPointMap vpm_;
   int jet_degree_, monge_degree_, rings_, max_rings_;
   double max_condition_;
+  double ball_radius_;  // > 0: the ball's, instead of the rings
   Ring_collector<FaceGraph> collector_;
   std::vector<Local_kernel::Point_3> points_;
   Paraboloid_estimator<FaceGraph, VertexPointMap> fallback_;
@@ -229,7 +262,7 @@ void jet_fitting_curvatures(const FaceGraph& g, const NamedParameters& np = para
   const int rings = internal::parameter_or(np, internal_np::neighborhood_rings, 1);
   const int max_rings = internal::parameter_or(np, internal_np::max_neighborhood_rings, rings + 3);
   const double max_condition = internal::parameter_or(np, internal_np::max_condition_number, 1e3);
-  internal::reject_ball_radius<NamedParameters>("jet_fitting_curvatures");
+  const double ball_radius = internal::ball_radius_or_zero(np, "jet_fitting_curvatures");
   const std::string where = "jet_fitting_curvatures: ";
   if (jet_degree < 1 || jet_degree > 4 || monge_degree < 2 || monge_degree > jet_degree)
     throw std::invalid_argument(where + "needs 2 <= monge_degree <= jet_degree <= 4");
@@ -240,7 +273,7 @@ void jet_fitting_curvatures(const FaceGraph& g, const NamedParameters& np = para
 
   internal::estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
     return internal::Jet_fitter<FaceGraph, std::decay_t<decltype(vpm)>>(g, vpm, jet_degree, monge_degree, rings,
-                                                                         max_rings, max_condition);
+                                                                         max_rings, max_condition, ball_radius);
   });
 }
 

@@ -222,7 +222,7 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag,
 void paraboloid_fitting_curvatures(const FaceGraph& g,
                                    const NamedParameters& np = parameters::default_values())
 {
-  const internal::Fit_parameters fit = internal::curvature_fit_parameters(np, "paraboloid_fitting_curvatures", 4);
+  const internal::Fit_parameters fit = internal::curvature_fit_parameters(np, "paraboloid_fitting_curvatures", 4, true);
   internal::estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
     return internal::Paraboloid_estimator<FaceGraph, std::decay_t<decltype(vpm)>>(g, vpm, fit);
   });

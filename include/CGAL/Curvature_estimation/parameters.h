@@ -17,6 +17,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/version.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -154,10 +155,10 @@ auto parameter_or(const NamedParameters& np, Tag tag, const T& default_value)
   return ::CGAL::parameters::choose_parameter(::CGAL::parameters::get_parameter(np, tag), default_value);
 }
 
-// Radius neighborhoods (CGAL 6's `ball_radius`) are not implemented by this
-// package's estimators: a pack that sets it is refused rather than ignored, so
-// that a chain written for CGAL's interpolated corrected curvatures does not
-// silently give 1-ring estimates here.
+// Radius neighborhoods (CGAL 6's `ball_radius`) are implemented by the paraboloid
+// fits of surfaces and jet fitting only: the other estimators refuse a pack that
+// sets it rather than ignore it, so that a chain written for CGAL's interpolated
+// corrected curvatures does not silently give 1-ring estimates there.
 template <typename NamedParameters>
 void reject_ball_radius(const char* caller)
 {
@@ -165,6 +166,17 @@ void reject_ball_radius(const char* caller)
     throw std::invalid_argument(std::string(caller) +
                                 ": ball_radius is not supported; neighborhoods are set in rings "
                                 "(neighborhood_rings)");
+}
+
+// The `ball_radius` of `np`, or 0 where it has none. Throws std::invalid_argument
+// where it is given but not positive and finite.
+template <typename NamedParameters>
+double ball_radius_or_zero(const NamedParameters& np, const char* caller)
+{
+  const double radius = static_cast<double>(parameter_or(np, internal_np::ball_radius, 0.0));
+  if (has_parameter<NamedParameters, internal_np::ball_radius_t>() && !(radius > 0 && std::isfinite(radius)))
+    throw std::invalid_argument(std::string(caller) + ": ball_radius must be positive and finite");
+  return radius;
 }
 
 } // namespace internal

@@ -46,6 +46,14 @@ public:
   std::size_t ring_end(int r) const { return rings_.ring_end(r); }
   bool center_on_border(Vertex) const { return rings_.center_on_border(); }
 
+  static constexpr bool ball_neighborhoods = true;
+  bool grow_ball(double radius, const Eigen::Vector3d& center)
+  {
+    return rings_.grow_ball(*g_, radius * radius, [&](Vertex w) { return (point(w) - center).squaredNorm(); });
+  }
+  bool inside_ball(std::size_t i) const { return rings_.inside_ball(i); }
+  std::size_t ball_size() const { return rings_.ball_size(); }
+
   // Face averages need no neighborhood.
   static bool platelet_for_normal(Vertex_normal_method method) { return method == Vertex_normal_method::quadric_fit; }
 

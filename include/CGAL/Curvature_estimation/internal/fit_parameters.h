@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The named parameters of Hamann's platelet fit, read once for every public
 // function that runs it (for its curvatures or for its quadric_fit normal): the
-// neighborhood rings, the condition threshold and the normal method, with the
-// documented defaults, checked.
+// neighborhood rings or ball, the condition threshold and the normal method,
+// with the documented defaults, checked.
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_FIT_PARAMETERS_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_FIT_PARAMETERS_H
 
@@ -23,6 +23,7 @@ struct Platelet_fit_settings
   int max_rings = 3;        // widening stops here
   double max_condition = 1e3;
   int degree = 2;           // fit_degree: 2 Hamann's fit (and its default normal), 3 or 4 a Taylor fit of that degree
+  double ball_radius = 0;   // > 0: the fits over the ball of this radius (see Platelet_fit_core::fit_in_ball), not the rings
   // Whether test (b) of quadric_fit.h (whitened coordinates) may accept the
   // widest neighborhood where test (a) refuses every one; false: test (a) alone.
   bool whitened_conditioning = true;
@@ -35,11 +36,13 @@ struct Fit_parameters
 };
 
 // The parameters from `np`; `caller` names the public function in error messages.
-// Throws std::invalid_argument where one is out of its range or `ball_radius` is given.
+// Throws std::invalid_argument where one is out of its range, or where
+// `ball_radius` is given and `with_ball_radius` is false.
 template <typename NamedParameters>
-Fit_parameters fit_parameters(const NamedParameters& np, const char* caller)
+Fit_parameters fit_parameters(const NamedParameters& np, const char* caller, bool with_ball_radius = false)
 {
-  reject_ball_radius<NamedParameters>(caller);
+  if (!with_ball_radius)
+    reject_ball_radius<NamedParameters>(caller);
   Platelet_fit_settings settings;
   settings.rings = parameter_or(np, internal_np::neighborhood_rings, 1);
   settings.boundary_rings = parameter_or(np, internal_np::boundary_neighborhood_rings, settings.rings);
@@ -52,6 +55,7 @@ Fit_parameters fit_parameters(const NamedParameters& np, const char* caller)
     throw std::invalid_argument(where + "max_neighborhood_rings must be at least the starting rings");
   if (!(settings.max_condition > 1))
     throw std::invalid_argument(where + "max_condition_number must be greater than 1");
+  settings.ball_radius = ball_radius_or_zero(np, caller);
   return {settings, parameter_or(np, internal_np::vertex_normal_method, Vertex_normal_method::quadric_fit)};
 }
 
@@ -59,9 +63,10 @@ Fit_parameters fit_parameters(const NamedParameters& np, const char* caller)
 // paraboloid fits and the quadric_fit normals): 2 to `max_degree`. Throws
 // std::invalid_argument where it is out of that range.
 template <typename NamedParameters>
-Fit_parameters curvature_fit_parameters(const NamedParameters& np, const char* caller, int max_degree)
+Fit_parameters curvature_fit_parameters(const NamedParameters& np, const char* caller, int max_degree,
+                                        bool with_ball_radius)
 {
-  Fit_parameters fit = fit_parameters(np, caller);
+  Fit_parameters fit = fit_parameters(np, caller, with_ball_radius);
   fit.settings.degree = parameter_or(np, internal_np::fit_degree, 2);
   if (fit.settings.degree < 2 || fit.settings.degree > max_degree)
     throw std::invalid_argument(std::string(caller) + ": fit_degree must be in 2.." + std::to_string(max_degree));

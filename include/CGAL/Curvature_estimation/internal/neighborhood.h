@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // k-ring neighborhoods of a vertex of a FaceGraph or of a tetrahedral complex,
 // grown one ring at a time so that an estimator can widen its stencil without
-// gathering it again.
+// gathering it again; and on a FaceGraph, the neighborhood in a ball about the
+// vertex, grown with its radius.
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_NEIGHBORHOOD_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_NEIGHBORHOOD_H
 
@@ -35,6 +36,7 @@ public:
     vertices_.clear();
     ring_ends_.clear();
     stamped_ = false;
+    in_ball_ = false;
     vertices_.push_back(center);
     ring_ends_.push_back(1);
     center_on_border_ = false;
@@ -86,6 +88,71 @@ public:
     return ring_ends_.back() > last;
   }
 
+  // After start(), instead of extend(): adds, as one ring after the 1-ring, the
+  // vertices inside the ball of squared radius `squared_radius` about the center
+  // that are joined to it by edges inside the ball: the connected part of the mesh
+  // in the ball, so that the other side of a thin part is not taken. The 1-ring
+  // stays gathered whole: the ball is the vertices i of vertices() with
+  // inside_ball(i), ball_size() of them, the center included. squared_distance(w)
+  // gives the squared distance of w to the center (NaN where unknown: never
+  // inside). Called again with a larger radius, it grows the same ball. Returns
+  // whether vertices joined to the ball are left outside it (false: the
+  // component is exhausted).
+  template <typename SquaredDistance>
+  bool grow_ball(const FaceGraph& g, double squared_radius, const SquaredDistance& squared_distance)
+  {
+    to_expand_.clear();
+    if (!in_ball_) {
+      in_ball_ = true;
+      outside_.clear();
+      if constexpr (indexed)
+        if (!stamped_)
+          stamp_gathered();
+      inside_.assign(vertices_.size(), 0);
+      enter_ball(0);
+      for (std::size_t i = 1; i < ring_ends_[1]; ++i) {
+        const double d = squared_distance(vertices_[i]);
+        if (d <= squared_radius)
+          enter_ball(i);
+        else
+          outside_.push_back({vertices_[i], d, i});
+      }
+      ball_size_ = to_expand_.size();
+      ring_ends_.push_back(vertices_.size());
+    } else {
+      std::size_t kept = 0;
+      for (const Outside& o : outside_)
+        if (o.squared_distance <= squared_radius)
+          add_to_ball(o.vertex, o.index);
+        else
+          outside_[kept++] = o;
+      outside_.resize(kept);
+    }
+    while (!to_expand_.empty()) {
+      const vertex_descriptor v = to_expand_.back();
+      to_expand_.pop_back();
+      const halfedge_descriptor h = halfedge(v, g);
+      if (h == boost::graph_traits<FaceGraph>::null_halfedge())
+        continue;
+      for (halfedge_descriptor incoming : halfedges_around_target(h, g)) {
+        const vertex_descriptor w = source(incoming, g);
+        if (!reach(w))
+          continue;
+        const double d = squared_distance(w);
+        if (d <= squared_radius)
+          add_to_ball(w, not_gathered);
+        else
+          outside_.push_back({w, d, not_gathered});
+      }
+    }
+    ring_ends_.back() = vertices_.size();
+    return !outside_.empty();
+  }
+
+  // After grow_ball: whether vertices()[i] is in the ball, and their number.
+  bool inside_ball(std::size_t i) const { return inside_[i] != 0; }
+  std::size_t ball_size() const { return ball_size_; }
+
   // Number of rings gathered (1 after start()).
   int rings() const { return static_cast<int>(ring_ends_.size()) - 1; }
 
@@ -118,7 +185,45 @@ private:
     vertices_.push_back(w);
   }
 
-  // A new stamp on the vertices gathered so far: the first extend since start.
+  static constexpr std::size_t not_gathered = std::size_t(-1);
+
+  // Puts vertices()[i] in the ball, to have its neighbors met.
+  void enter_ball(std::size_t i)
+  {
+    inside_[i] = 1;
+    to_expand_.push_back(vertices_[i]);
+  }
+
+  // Puts w in the ball: vertices()[index], or where not gathered, a new one.
+  void add_to_ball(vertex_descriptor w, std::size_t index)
+  {
+    if (index == not_gathered) {
+      index = vertices_.size();
+      vertices_.push_back(w);
+      inside_.push_back(0);
+    }
+    enter_ball(index);
+    ++ball_size_;
+  }
+
+  // Marks w as reached by the ball; false where it was already (gathered, or
+  // met outside the ball).
+  bool reach(vertex_descriptor w)
+  {
+    if constexpr (indexed)
+      return stamp(w);
+    else {
+      for (const vertex_descriptor& u : vertices_)
+        if (u == w)
+          return false;
+      for (const Outside& o : outside_)
+        if (o.vertex == w)
+          return false;
+      return true;
+    }
+  }
+
+  // A new stamp on the vertices gathered so far: the first extend or grow_ball since start.
   void stamp_gathered()
   {
     if (++stamp_ == 0) {  // wrapped around: no stamp is current
@@ -149,10 +254,56 @@ private:
   std::vector<vertex_descriptor> vertices_;
   std::vector<std::size_t> ring_ends_;
   std::vector<char> has_face_;  // per incoming halfedge of the center
+  // The ball (grow_ball): whether each gathered vertex is in it; the vertices
+  // met next to it but outside it (index: where gathered, those of the 1-ring,
+  // their place in vertices_); and those whose neighbors are still to be met.
+  struct Outside
+  {
+    vertex_descriptor vertex;
+    double squared_distance;
+    std::size_t index;
+  };
+  bool in_ball_ = false;
+  std::vector<char> inside_;
+  std::size_t ball_size_ = 0;
+  std::vector<Outside> outside_;
+  std::vector<vertex_descriptor> to_expand_;
   bool center_on_border_ = false;
   bool one_ring_in_fan_order_ = false;
   bool faces_are_triangles_ = false;
 };
+
+// The growth of the balls of the fits over a ball (ball_radius). From `radius`,
+// the ball grows by the factor ball_growth until it holds twice the fit's
+// `unknowns` vertices (fewer leave a least-squares fit close to interpolating the
+// noise that it is there to average), and then, while accepted() refuses its fit,
+// up to ball_growth_for_conditioning times that radius. grow(radius) gathers
+// the ball of that radius and returns whether vertices are left outside it (false:
+// it cannot grow); size() is the number of its vertices. Returns 1 plus the
+// number of growths, 0 where no ball was accepted.
+constexpr double ball_growth = 1.25;
+constexpr double ball_growth_for_conditioning = 2;
+
+template <typename Grow, typename Size, typename Accepted>
+int fit_in_growing_ball(double radius, int unknowns, const Grow& grow, const Size& size, const Accepted& accepted)
+{
+  int growths = 0;
+  bool more = grow(radius);
+  const auto grow_once = [&] {
+    radius *= ball_growth;
+    ++growths;
+    more = grow(radius);
+  };
+  while (size() < std::size_t(2 * unknowns) && more)
+    grow_once();
+  const double widest = ball_growth_for_conditioning * radius * (1 + 1e-9);
+  while (!(size() >= std::size_t(unknowns) && accepted())) {
+    if (!more || radius * ball_growth > widest)
+      return 0;
+    grow_once();
+  }
+  return growths + 1;
+}
 
 // k-rings over the neighbors of Tetrahedral_complex_stars, one ring at a time.
 // A stamp per vertex (allocated on first use, so that copying an unused

@@ -11,6 +11,11 @@
 //   point(v)                                the point of v in double
 //   start(v), extend(), rings(), vertices(), ring_end(r)
 //                                           the k-rings of v, grown one ring at a time
+//   ball_neighborhoods                      whether it has these three:
+//   grow_ball(radius, center), inside_ball(i), ball_size()
+//                                           after start(v), instead of extend(): the vertices
+//                                           joined to v inside the ball of that radius about
+//                                           center, the point of v (see Ring_collector::grow_ball)
 //   center_on_border(v)                     after start(v)
 //   platelet_for_normal(method)             whether initial_normal needs the gathered 1-ring
 //   initial_normal(v, method, gathered, offsets, finite, scale)
@@ -89,6 +94,8 @@ public:
     const double length = normal.norm();
     if (!(length > 0) || !std::isfinite(length) || !gather(v))
       return Estimate();
+    if (in_ball())
+      return fit_in_ball(normal / length);
     if (settings_.degree == 2)
       return fit_curvature(normal / length);
     const Estimate estimate = fit_of_degree(normal / length);
@@ -110,28 +117,38 @@ public:
   {
     if (!gather(v))
       return Estimate();
-    if (settings_.degree == 2)
+    if (settings_.degree == 2 && !in_ball())
       return fit_of_degree_two(v, method);
     Vector normal;
     if (!first_order_normal(v, method, true, normal))
       return Estimate();
+    if (in_ball())
+      return fit_in_ball(normal);
     const Estimate estimate = fit_of_degree(normal);
     return estimate.status != Estimation_status::not_estimable ? estimate : as_fallback(fit_of_degree_two(v, method));
   }
 
   // The neighbors gathered by the last fit or normal, on every ring it reached
-  // (0 where its vertex had no finite point).
-  std::size_t neighbors() const { return offsets_.empty() ? 0 : offsets_.size() - 1; }
+  // (0 where its vertex had no finite point); in a ball, those inside it.
+  std::size_t neighbors() const
+  {
+    return in_ball() ? ball_neighbors_ : offsets_.empty() ? 0 : offsets_.size() - 1;
+  }
 
   // The unit normal by `method`; false where there is none. With quadric_fit and
   // a fit degree of 3 or 4, the first-order normal corrected by the gradient of
   // that fit (see fit_of_degree), or where it is not determined up to the widest
-  // ring, by the degree-2 fit's.
+  // ring, by the degree-2 fit's; in a ball, by the gradient of the fit in the ball.
   bool normal(Vertex v, Vertex_normal_method method, Vector& normal)
   {
     const bool gathered = neighborhood_.platelet_for_normal(method);
     if (gathered && !gather(v))
       return false;
+    if (method == Vertex_normal_method::quadric_fit && in_ball()) {
+      if (!first_order_normal(v, method, gathered, normal))
+        return false;
+      return with_ball_fit([&](auto& fit) { return fit_ball(normal, fit) != 0; });
+    }
     if (method == Vertex_normal_method::quadric_fit && settings_.degree != 2) {
       if (!first_order_normal(v, method, gathered, normal))
         return false;
@@ -184,7 +201,8 @@ private:
     }
     if (length_count == 0 || !(length_sum > 0))
       return false;
-    scale_ = length_sum / length_count;
+    // In a ball, its radius: the ball is the unit ball.
+    scale_ = in_ball() ? settings_.ball_radius : length_sum / length_count;
     // A product is cheaper than a division and as exact to rounding, unless 1 / scale
     // overflows or is subnormal.
     inverse_scale_ = 1 / scale_;
@@ -197,7 +215,90 @@ private:
     }
     on_border_ = neighborhood_.center_on_border(v);
     curvature_rings_ = 0;
+    ball_neighbors_ = 0;
     return true;
+  }
+
+  bool in_ball() const { return settings_.ball_radius > 0; }
+
+  // The fits over the ball of radius ball_radius (ball_neighborhoods only): the
+  // Taylor polynomial of fit_degree with a constant term (the vertex is a sample,
+  // not a point the fit must pass through: its noise would enter the curvature
+  // divided by the squared radius) and linear terms, unweighted, in the frame of
+  // `normal` (first order), then again in the frame of the normal corrected by
+  // the fitted gradient. The ball grows as fit_in_growing_ball says, while test
+  // (a) and then (b) refuse the fit; status widened where it grew.
+  Estimate fit_in_ball(const Vector& normal)
+  {
+    Vector corrected = normal;
+    return with_ball_fit([&](auto& fit) {
+      const int growths = fit_ball(corrected, fit);
+      return growths != 0 ? curvature_estimate(corrected, tangent_basis<N>(corrected), growths, 1, fit) : Estimate();
+    });
+  }
+
+  // use(fit) with the Taylor fit of the settings' degree with constant and linear terms.
+  template <typename Use>
+  auto with_ball_fit(const Use& use)
+  {
+    if constexpr (D == 2)
+      if (settings_.degree == 4) {
+        Taylor_fit<D, 0, 4> fit;
+        return use(fit);
+      }
+    if (settings_.degree == 3) {
+      Taylor_fit<D, 0, 3> fit;
+      return use(fit);
+    }
+    Taylor_fit<D, 0, 2> fit;
+    return use(fit);
+  }
+
+  // The fit of fit_in_ball, accepted in the frame of `normal`, which it corrects:
+  // 1 plus the number of times the ball grew; 0 where no ball is accepted.
+  template <typename Fit>
+  int fit_ball(Vector& normal, Fit& fit)
+  {
+    if constexpr (!Neighborhood::ball_neighborhoods)
+      return 0;
+    else {
+      const double max_condition = settings_.degree == 2 ? settings_.max_condition
+                                                         : degree_condition_factor(settings_.degree) * settings_.max_condition;
+      const auto accepted = [&](const Vector& frame_normal) {
+        const Tangents tangents = tangent_basis<N>(frame_normal);
+        if (fit_in_frame(frame_normal, tangents, 0, max_condition, fit))
+          return true;
+        const auto samples = [&](const auto& add) { for_each_sample<Fit>(frame_normal, tangents, 0, add); };
+        return settings_.whitened_conditioning && fit.solve_whitened(max_condition, samples);
+      };
+      const int growths = fit_in_growing_ball(
+        1.0, Fit::unknowns, [&](double radius) { return reach_ball(radius); },
+        [&] { return neighborhood_.ball_size(); }, [&] { return accepted(normal); });
+      if (growths == 0)
+        return 0;
+      const Vector first = normal;
+      if (!correct_normal(normal, tangent_basis<N>(normal), fit.gradient()))
+        return 0;
+      if (!accepted(normal)) {  // keep the first frame's fit
+        normal = first;
+        if (!accepted(normal))
+          return 0;
+      }
+      return growths;
+    }
+  }
+
+  // Grows the ball to `radius` (in units of the ball radius); false when no
+  // vertex joined to it is left outside.
+  bool reach_ball(double radius)
+  {
+    const bool more = neighborhood_.grow_ball(radius * scale_, center_);
+    for (std::size_t i = offsets_.size(); i < neighborhood_.vertices().size(); ++i) {
+      offsets_.push_back(to_scale(neighborhood_.point(neighborhood_.vertices()[i]) - center_));
+      finite_.push_back(all_finite(offsets_.back()));
+    }
+    ball_neighbors_ = neighborhood_.ball_size() - 1;
+    return more;
   }
 
   Vector to_scale(const Vector& offset) const
@@ -449,11 +550,21 @@ private:
   // the frame: samples weighted by a Gaussian of width the mean 1-ring edge in the
   // cubic fits of fit_degree 2 only (see cubic_normal_min_rings); Hamann's fit and
   // the fits of fit_degree 3 and 4, over the rings their degree needs, are unweighted.
+  // The fits with a constant term are those over a ball (rings ignored): its
+  // samples, the vertex too, unweighted.
   template <typename Fit, typename Add>
   void for_each_sample(const Vector& normal, const Tangents& tangents, int rings, const Add& add) const
   {
-    const bool weighted = settings_.degree == 2 && Fit::unknowns > Taylor_fit<D, 1, 2>::unknowns;
     const Eigen::Matrix<double, D, N> to_tangent = tangents.transpose();
+    if constexpr (Fit::constant_term) {
+      for (std::size_t i = 0; i < offsets_.size(); ++i) {
+        const Vector& q = offsets_[i];
+        if (finite_[i] && neighborhood_.inside_ball(i))
+          add(Eigen::Matrix<double, D, 1>(to_tangent * q), normal.dot(q), 1.0);
+      }
+      return;
+    }
+    const bool weighted = settings_.degree == 2 && Fit::unknowns > Taylor_fit<D, 1, 2>::unknowns;
     const std::size_t end = neighborhood_.ring_end(rings);  // hoisted: add writes memory
     for (std::size_t i = 1; i < end; ++i) {
       const Vector& q = offsets_[i];
@@ -474,6 +585,7 @@ private:
   // that gave the normal (the widest; the narrower ones failed test (a) for the
   // normal). 0: it starts on the settings' rings.
   int curvature_rings_ = 0;
+  std::size_t ball_neighbors_ = 0;  // in the ball of the last fit in a ball, the vertex excluded
 };
 
 } // namespace internal

@@ -3,18 +3,21 @@
 // numerical core shared by the surface (D = 2) and hypersurface (D = 3)
 // estimators:
 //
-//   h(x) = [g . x] + 1/2 x^T C x [+ cubic [+ quartic] terms],   x in R^D,   C symmetric,
+//   h(x) = [[c +] g . x] + 1/2 x^T C x [+ cubic [+ quartic] terms],   x in R^D,   C symmetric,
 //
-// the terms of orders FirstOrder..LastOrder (FirstOrder 1 or 2, LastOrder 2 to 4).
+// the terms of orders FirstOrder..LastOrder (FirstOrder 0 to 2, LastOrder 2 to 4).
 // FirstOrder = 2 trusts the frame's normal (Hamann's fit); FirstOrder = 1 fits
-// the gradient, i.e. corrects the normal; LastOrder = 3 takes the cubic part out
+// the gradient, i.e. corrects the normal; FirstOrder = 0 the height c at the
+// vertex too, which is then a sample like the others and not a point the fit
+// must pass through (the fits over a ball of a noisy mesh, whose vertex carries
+// noise that the fit would otherwise divide by the squared radius); LastOrder = 3 takes the cubic part out
 // of the gradient, which a one-sided (boundary) stencil does not cancel, and out
 // of C, which an uneven stencil does not cancel either (fit_degree 3); LastOrder
 // = 4 the quartic part too (fit_degree 4).
 //
 // When a fit is accepted: two tests of conditioning. The samples x_i (weights
 // w_i) are given in tangent coordinates scaled by a length of the mesh (the mean
-// 1-ring edge). Let r(x) be the row of the monomials of orders 1..LastOrder,
+// 1-ring edge). Let r(x) be the row of the monomials of orders min(FirstOrder, 1)..LastOrder,
 // each order in orthonormal coordinates of the symmetric tensors (see add),
 // N = sum w_i r(x_i) r(x_i)^T, and N_own its block of the fit's own orders
 // FirstOrder..LastOrder.
@@ -27,7 +30,7 @@
 // about the vertex, scaled so that the weighted mean of |y|^2 is 1; M = L L^T
 // (Cholesky) and W = L^-1, so that the second moments of the y_i are the
 // identity. A monomial of y = W x is a combination of the monomials of x of its
-// own order: r(W x) = T r(x), T block-diagonal (W on the linear terms, the maps
+// own order: r(W x) = T r(x), T block-diagonal (1 on the constant, W on the linear terms, the maps
 // it induces on the symmetric tensors on the others), hence N_y = T N T^T. Two
 // whitenings differ by an orthogonal map, which acts on N_y by an orthogonal
 // congruence: cond_1(N_y) is invariant, to a factor bounded by the number of
@@ -133,17 +136,20 @@ struct Monomial_exponents
 template <int D, int FirstOrder, int LastOrder>
 struct Monomial_tables
 {
-  static constexpr int tested = D + number_of_monomials(D, 2) + (LastOrder >= 3 ? number_of_monomials(D, 3) : 0) +
+  static constexpr int tested = (FirstOrder == 0 ? 1 : 0) + D + number_of_monomials(D, 2) +
+                                (LastOrder >= 3 ? number_of_monomials(D, 3) : 0) +
                                 (LastOrder == 4 ? number_of_monomials(D, 4) : 0);
+  // The degree of the lowest moment: that of the product of the lowest tested monomial with itself.
+  static constexpr int lowest_degree = FirstOrder == 0 ? 0 : 2;
   static constexpr int moments()
   {
     int count = 0;
-    for (int degree = 2; degree <= 2 * LastOrder; ++degree)
+    for (int degree = lowest_degree; degree <= 2 * LastOrder; ++degree)
       count += number_of_monomials(D, degree);
     return count;
   }
   // The first moment of degree 2 FirstOrder, the lowest that the fit's own block needs.
-  static constexpr int first_own_moment = FirstOrder == 1 ? 0 : number_of_monomials(D, 2) + number_of_monomials(D, 3);
+  static constexpr int first_own_moment = FirstOrder <= 1 ? 0 : number_of_monomials(D, 2) + number_of_monomials(D, 3);
 
   Monomial_exponents row[tested] = {};
   double scale[tested] = {};
@@ -161,13 +167,15 @@ struct Monomial_tables
     // coefficients do not depend on FirstOrder; the fit's own monomials first.
     int column = 0;
     add_order(2, column);
-    if (FirstOrder == 1)
+    if (FirstOrder <= 1)
       add_order(1, column);
+    if (FirstOrder == 0)
+      add_order(0, column);
     for (int order = 3; order <= LastOrder; ++order)
       add_order(order, column);
     if (FirstOrder == 2)
       add_order(1, column);
-    for (int degree = 2, m = 0; degree <= 2 * LastOrder; ++degree)
+    for (int degree = lowest_degree, m = 0; degree <= 2 * LastOrder; ++degree)
       for (int a = degree; a >= 0; --a)
         for (int b = degree - a; b >= (D == 2 ? degree - a : 0); --b, ++m) {
           moment[m].power[0] = a;
@@ -235,20 +243,22 @@ private:
 template <int D, int FirstOrder, int LastOrder>
 class Taylor_fit
 {
-  static_assert(FirstOrder >= 1 && FirstOrder <= 2 && LastOrder >= 2 && LastOrder <= 4, "orders out of range");
-  static_assert(FirstOrder == 1 || LastOrder == 2, "the own monomials must be a prefix of the tested ones");
+  static_assert(FirstOrder >= 0 && FirstOrder <= 2 && LastOrder >= 2 && LastOrder <= 4, "orders out of range");
+  static_assert(FirstOrder <= 1 || LastOrder == 2, "the own monomials must be a prefix of the tested ones");
 
   static constexpr int quadratic = number_of_monomials(D, 2);
   static constexpr int cubic = LastOrder >= 3 ? number_of_monomials(D, 3) : 0;
   static constexpr int quartic = LastOrder == 4 ? number_of_monomials(D, 4) : 0;
 
 public:
-  static constexpr bool linear_terms = FirstOrder == 1;
+  static constexpr bool constant_term = FirstOrder == 0;
+  static constexpr bool linear_terms = FirstOrder <= 1;
   static constexpr int last_order = LastOrder;
-  static constexpr int unknowns = (FirstOrder == 1 ? D : 0) + quadratic + cubic + quartic;
-  // The monomials of orders 1..LastOrder, those of test (b): the fit's own ones
-  // first (quadratic, [linear,] [cubic, [quartic]]), then for Hamann's fit the linear ones.
-  static constexpr int tested = D + quadratic + cubic + quartic;
+  static constexpr int unknowns = (constant_term ? 1 : 0) + (linear_terms ? D : 0) + quadratic + cubic + quartic;
+  // The monomials of orders min(FirstOrder, 1)..LastOrder, those of test (b): the
+  // fit's own ones first (quadratic, [linear, [constant,]] [cubic, [quartic]]),
+  // then for Hamann's fit the linear ones.
+  static constexpr int tested = (constant_term ? 1 : 0) + D + quadratic + cubic + quartic;
 
   using Point = Eigen::Matrix<double, D, 1>;
   using Hessian = Eigen::Matrix<double, D, D>;
@@ -429,7 +439,7 @@ private:
         hessian_(j, i) = value;
         ++column;
       }
-    if constexpr (FirstOrder == 1)
+    if constexpr (linear_terms)
       CGAL_CURVATURE_ESTIMATION_UNROLL
       for (int i = 0; i < D; ++i)
         gradient_[i] = coefficients[column + i];

@@ -57,6 +57,7 @@ public:
   // every fit is ill-conditioned; the fit then starts again from the 1-ring's
   // best-fitting hyperplane.
   static constexpr bool restart_from_hyperplane = true;
+  static constexpr bool ball_neighborhoods = false;  // hypersurface_paraboloid_fitting_curvatures refuses ball_radius
   using Vertex = std::size_t;
   using Estimate = Hypersurface_estimate;
 
