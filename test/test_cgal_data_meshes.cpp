@@ -262,7 +262,7 @@ TEST(CGAL_data_meshes, EveryEstimatorWithItsDefaults)
     const std::vector<char> before = refused_before(mesh);
     std::vector<double> our_errors, jet_errors;
     const auto vpm = get(CGAL::vertex_point, mesh);
-    CEI::Jet_fitter<Mesh, decltype(vpm)> reference(mesh, vpm, 4, 2, 3, 6, 1e3);  // jet_degree(4).neighborhood_rings(3)
+    CEI::Jet_fitter<Mesh, decltype(vpm)> reference(mesh, vpm, 4, 2, 3, 6, 1e3, 0);  // jet_degree(4).neighborhood_rings(3)
     for (Vertex v : vertices(mesh)) {
       const std::size_t i = std::size_t(v);
       if (!counted[i] || !before[i] || ours.status[i] == Status::not_estimable)

@@ -598,22 +598,24 @@ TEST(NamedParameters, OutOfRangeParametersThrow)
                                                             .max_condition_number(1.5)));
 }
 
-// CGAL 6's ball_radius (radius neighborhoods) is refused by every estimator, with or
-// without output maps, rather than ignored.
-TEST(NamedParameters, BallRadiusIsRefused)
+// CGAL 6's ball_radius (radius neighborhoods) is refused, with or without output maps,
+// rather than ignored, by the estimators that do not take it; those that do (the
+// paraboloid fits of surfaces, jet fitting, the quadric_fit normals: see
+// test_ball_radius) refuse a radius that is not positive and finite.
+TEST(NamedParameters, BallRadiusIsRefusedWhereNotTaken)
 {
   Mesh mesh = jittered_paraboloid_grid();
   Outputs out(mesh);
   const auto np = CE::parameters::vertex_mean_curvature_map(out.mean).ball_radius(0.5);
-  EXPECT_THROW(CE::paraboloid_fitting_curvatures(mesh, np), std::invalid_argument);
-  EXPECT_THROW(CE::paraboloid_fitting_curvatures(mesh, CE::parameters::ball_radius(0.5)), std::invalid_argument);
   EXPECT_THROW(CE::curve_network_curvatures(mesh, np), std::invalid_argument);
   EXPECT_THROW(CE::gauss_map_curvatures(mesh, np), std::invalid_argument);
   EXPECT_THROW(CE::taubin_curvatures(mesh, np), std::invalid_argument);
   EXPECT_THROW(CE::chen_schmitt_curvatures(mesh, np), std::invalid_argument);
-  EXPECT_THROW(CE::jet_fitting_curvatures(mesh, np), std::invalid_argument);
+  const auto negative = CE::parameters::vertex_mean_curvature_map(out.mean).ball_radius(-0.5);
+  EXPECT_THROW(CE::paraboloid_fitting_curvatures(mesh, negative), std::invalid_argument);
+  EXPECT_THROW(CE::jet_fitting_curvatures(mesh, negative), std::invalid_argument);
   auto normals = mesh.add_property_map<vertex_descriptor, Vector>("v:test_normal").first;
-  EXPECT_THROW(CE::estimate_vertex_normals(mesh, normals, CE::parameters::ball_radius(0.5)), std::invalid_argument);
+  EXPECT_THROW(CE::estimate_vertex_normals(mesh, normals, CE::parameters::ball_radius(0.0)), std::invalid_argument);
   for (vertex_descriptor v : vertices(mesh))
     EXPECT_TRUE(same_bits(out.mean[v], sentinel_value));
   CE::Indexed_tetrahedral_mesh<std::array<double, 4>> cells;
@@ -686,10 +688,14 @@ TEST(NamedParameters, OneChainServesCgalInterpolatedCorrectedCurvatures)
   CE::paraboloid_fitting_curvatures(mesh, ours);
   check("paraboloid_fitting_curvatures, package chain", 0.01);
 
-  // CGAL's ball_radius is read by CGAL and refused by ours.
+  // CGAL's ball_radius is read by CGAL's estimator and by ours that take it.
   CGAL::Polygon_mesh_processing::interpolated_corrected_curvatures(mesh, np.ball_radius(0.2));
   check("interpolated_corrected_curvatures, ball_radius", 0.05);
-  EXPECT_THROW(CE::paraboloid_fitting_curvatures(mesh, np.ball_radius(0.2)), std::invalid_argument);
+  CE::paraboloid_fitting_curvatures(mesh, np.ball_radius(0.2));
+  check("paraboloid_fitting_curvatures, ball_radius", 0.01);
+  CE::jet_fitting_curvatures(mesh, np.ball_radius(0.2));
+  check("jet_fitting_curvatures, ball_radius", 0.01);
+  EXPECT_THROW(CE::gauss_map_curvatures(mesh, np.ball_radius(0.2)), std::invalid_argument);
 }
 #endif
 

@@ -12,6 +12,7 @@
 #include <CGAL/Curvature_estimation/gauss_map.h>
 #include <CGAL/Curvature_estimation/hypersurface_paraboloid_fitting.h>
 #include <CGAL/Curvature_estimation/jet_fitting.h>
+#include <CGAL/Curvature_estimation/mean_edge_length.h>
 #include <CGAL/Curvature_estimation/paraboloid_fitting.h>
 #include <CGAL/Curvature_estimation/taubin.h>
 #include <CGAL/Curvature_estimation/vertex_normals.h>

@@ -183,6 +183,13 @@ private:
 /// whose conditioning test accepts anisotropic neighborhoods, with the status
 /// `fallback`; a vertex that neither estimates is not estimable (NaN).
 ///
+/// With `ball_radius(r)` the neighborhood is the ball of `paraboloid_fitting_curvatures()`
+/// (the part of the mesh inside the ball of radius r about the vertex, joined to it by
+/// edges inside the ball), grown as there until it holds twice the jet's coefficients
+/// and then, while CGAL's condition number exceeds `max_condition_number`, up to twice
+/// that radius (status `widened` where it grew): the same neighborhoods as the
+/// paraboloid fit's, for like-for-like comparisons at a scale.
+///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` (default), `CGAL::Parallel_tag` or
 ///         `CGAL::Parallel_if_available_tag`. Sequential and parallel runs give
 ///         identical results. In parallel the vertex point map is read from several
@@ -223,6 +230,11 @@ private:
 ///     \cgalParamType{`int`, at least `neighborhood_rings`}
 ///     \cgalParamDefault{`neighborhood_rings + 3`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{ball_radius}
+///     \cgalParamDescription{the radius of the ball that is the neighborhood instead of the rings (see above)}
+///     \cgalParamType{`double`, positive, in the units of the mesh (see `mean_edge_length()`)}
+///     \cgalParamDefault{none: the rings}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{max_condition_number}
 ///     \cgalParamDescription{fits whose condition number (as CGAL computes it) is larger are widened}
 ///     \cgalParamType{`double`, greater than 1}
@@ -250,8 +262,7 @@ private:
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// \throws std::invalid_argument if a parameter is out of its range, or if `ball_radius`
-///         is given (neighborhoods are set in rings).
+/// \throws std::invalid_argument if a parameter is out of its range.
 template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename FaceGraph,
           typename NamedParameters = parameters::Default_named_parameters>

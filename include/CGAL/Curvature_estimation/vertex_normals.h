@@ -156,6 +156,14 @@ struct Vertex_normal_estimator
  *     \cgalParamDefault{`2`}
  *   \cgalParamNEnd
  *
+ *   \cgalParamNBegin{ball_radius}
+ *     \cgalParamDescription{`quadric_fit` only: the area-weighted normal corrected by the gradient of the fit
+ *                           over the ball of this radius of `paraboloid_fitting_curvatures()` (see Curvature at
+ *                           a scale there), instead of the rings: normals at that scale, for noisy meshes}
+ *     \cgalParamType{`double`, positive, in the units of the mesh (see `mean_edge_length()`)}
+ *     \cgalParamDefault{none: the rings}
+ *   \cgalParamNEnd
+ *
  *   \cgalParamNBegin{vertex_estimation_status_map}
  *     \cgalParamDescription{an optional output property map receiving for each vertex
  *                           `Estimation_status::ok` when a normal was estimated and
@@ -168,8 +176,7 @@ struct Vertex_normal_estimator
  *
  * @tparam ConcurrencyTag `CGAL::Sequential_tag` (default), `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`
  *
- * \throws std::invalid_argument if a ring, condition or `fit_degree` parameter is out of its range, or if
- *         `ball_radius` is given (neighborhoods are set in rings).
+ * \throws std::invalid_argument if a ring, condition, `fit_degree` or `ball_radius` parameter is out of its range.
  */
 template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename FaceGraph,
