@@ -195,7 +195,7 @@ void run_bunny(const std::string& dir)
   Mesh mesh = read_real_mesh("bunny00");
   Normal_map normals = mesh.add_property_map<vertex_descriptor, Kernel::Vector_3>("v:given_normal").first;
   CE::estimate_vertex_normals(mesh, normals); // no exact normals on a scanned mesh: the default estimate
-  const double h = mean_edge_length(mesh);
+  const double h = CE::mean_edge_length(mesh);
   std::vector<const Estimator_info*> with_H;
   for (const Estimator_info& info : estimators())
     if (info.quantities & gives_H)

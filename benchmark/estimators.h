@@ -41,6 +41,9 @@ enum class Estimator
   paraboloid_given_normals,  // normals passed in a vertex_normal_map
   paraboloid_d3,             // fit_degree(3): cubic Taylor fit over 2 rings
   paraboloid_d4,             // fit_degree(4): quartic Taylor fit over 3 rings
+  paraboloid_ball_2h,        // ball_radius of 2 mean edge lengths
+  paraboloid_ball_4h,        // ... 4
+  paraboloid_ball_8h,        // ... 8
   curve_network_1,           // extrapolation_order(1): O(h^2)
   curve_network_2,           // extrapolation_order(2): O(h^4) on parameter grids
   gauss_map,
@@ -85,6 +88,9 @@ inline const std::vector<Estimator_info>& estimators()
     {Estimator::paraboloid_given_normals, "paraboloid_given_normals", "paraboloid (given normals)"},
     {Estimator::paraboloid_d3, "paraboloid_d3", "paraboloid, fit degree 3"},
     {Estimator::paraboloid_d4, "paraboloid_d4", "paraboloid, fit degree 4"},
+    {Estimator::paraboloid_ball_2h, "paraboloid_ball_2h", "paraboloid, ball radius 2 h"},
+    {Estimator::paraboloid_ball_4h, "paraboloid_ball_4h", "paraboloid, ball radius 4 h"},
+    {Estimator::paraboloid_ball_8h, "paraboloid_ball_8h", "paraboloid, ball radius 8 h"},
     {Estimator::curve_network_1, "curve_network_1", "curve network O(h^2)"},
     {Estimator::curve_network_2, "curve_network_2", "curve network O(h^4)"},
     {Estimator::gauss_map, "gauss_map", "Gauss map"},
@@ -103,15 +109,6 @@ inline const std::vector<Estimator_info>& estimators()
 #endif
   };
   return all;
-}
-
-/// Mean length of the edges of `mesh`, the h of the ICC ball radii.
-inline double mean_edge_length(const Mesh& mesh)
-{
-  double sum = 0.0;
-  for (Mesh::Edge_index edge : edges(mesh))
-    sum += CGAL::Polygon_mesh_processing::edge_length(edge, mesh);
-  return sum / static_cast<double>(num_edges(mesh));
 }
 
 #if CGAL_VERSION_MAJOR >= 6
@@ -147,7 +144,7 @@ void run_icc(const Mesh& mesh, const NamedParameters& np, const CGALParameters& 
 
 /// Runs estimator `e` on `mesh` with the outputs (and any other parameters) of `np`.
 /// `given_normals` is read by `paraboloid_given_normals` only, `h` (the mean edge
-/// length of `mesh`) by the ICC ball radii only.
+/// length of `mesh`) by the ball radii only.
 template <typename ConcurrencyTag, typename NamedParameters>
 void run(Estimator e, const Mesh& mesh, Normal_map given_normals, double h, const NamedParameters& np)
 {
@@ -167,6 +164,15 @@ void run(Estimator e, const Mesh& mesh, Normal_map given_normals, double h, cons
       return;
     case Estimator::paraboloid_d4:
       CE::paraboloid_fitting_curvatures<ConcurrencyTag>(mesh, np.fit_degree(4));
+      return;
+    case Estimator::paraboloid_ball_2h:
+      CE::paraboloid_fitting_curvatures<ConcurrencyTag>(mesh, np.ball_radius(2 * h));
+      return;
+    case Estimator::paraboloid_ball_4h:
+      CE::paraboloid_fitting_curvatures<ConcurrencyTag>(mesh, np.ball_radius(4 * h));
+      return;
+    case Estimator::paraboloid_ball_8h:
+      CE::paraboloid_fitting_curvatures<ConcurrencyTag>(mesh, np.ball_radius(8 * h));
       return;
     case Estimator::curve_network_1:
       CE::curve_network_curvatures<ConcurrencyTag>(mesh, np.extrapolation_order(1));
