@@ -600,8 +600,8 @@ TEST(NamedParameters, OutOfRangeParametersThrow)
 
 // CGAL 6's ball_radius (radius neighborhoods) is refused, with or without output maps,
 // rather than ignored, by the estimators that do not take it; those that do (the
-// paraboloid fits of surfaces, jet fitting, the quadric_fit normals: see
-// test_ball_radius) refuse a radius that is not positive and finite.
+// paraboloid fits, jet fitting, the quadric_fit normals: see test_ball_radius) refuse
+// a radius that is not positive and finite.
 TEST(NamedParameters, BallRadiusIsRefusedWhereNotTaken)
 {
   Mesh mesh = jittered_paraboloid_grid();
@@ -623,7 +623,7 @@ TEST(NamedParameters, BallRadiusIsRefusedWhereNotTaken)
   cells.cells = {{0, 1, 2, 3}};
   std::vector<double> cell_H(4, sentinel_value);
   EXPECT_THROW(CE::hypersurface_paraboloid_fitting_curvatures(
-                 cells, CE::parameters::vertex_mean_curvature_map(CGAL::make_property_map(cell_H)).ball_radius(0.5)),
+                 cells, CE::parameters::vertex_mean_curvature_map(CGAL::make_property_map(cell_H)).ball_radius(-0.5)),
                std::invalid_argument);
   for (double h : cell_H)
     EXPECT_TRUE(same_bits(h, sentinel_value));

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The weights of a vertex's neighbors or faces, a parameter of Taubin's estimator, of the Gauss map and of Chen-Schmitt.
+// The weights of a vertex's neighbors or faces, a parameter of Taubin's estimator, of the Gauss map, of
+// Chen-Schmitt and of the paraboloid fits over a ball.
 #ifndef CGAL_CURVATURE_ESTIMATION_NEIGHBOR_WEIGHTING_H
 #define CGAL_CURVATURE_ESTIMATION_NEIGHBOR_WEIGHTING_H
 
@@ -13,7 +14,9 @@ namespace Curvature_estimation {
 /// `centroid`). In `gauss_map_curvatures()`, when given, they weight the per-face
 /// Jacobians of the normal (the paper's differential; `area` or `centroid`). In
 /// `chen_schmitt_curvatures()`, `uniform` selects the paper's unweighted fit over
-/// the 1-ring. A function given a value it does not list throws `std::invalid_argument`.
+/// the 1-ring. In `paraboloid_fitting_curvatures()` and
+/// `hypersurface_paraboloid_fitting_curvatures()` with a `ball_radius`, `uniform` (the
+/// default) or `smooth`. A function given a value it does not list throws `std::invalid_argument`.
 enum class Neighbor_weighting : unsigned char
 {
   /// The areas of the faces (Taubin 1995).
@@ -22,7 +25,10 @@ enum class Neighbor_weighting : unsigned char
   /// face f (Chen and Wu 2004; Chen, Wu and Chi 2005, eq. 23).
   centroid,
   /// Equal weights (Chen and Schmitt 1992).
-  uniform
+  uniform,
+  /// The weight (1 - |q - p|^2 / r^2)^2 of a neighbor q in the ball of radius r about p
+  /// (`ball_radius`, or the radius it grew to): 1 at p, falling smoothly to 0 at r.
+  smooth
 };
 
 } // namespace Curvature_estimation

@@ -163,6 +163,20 @@ void put_hypersurface_estimate(const NamedParameters& np, const Vertex& v, const
 ///     \cgalParamType{`int`, 2 or 3}
 ///     \cgalParamDefault{`2`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{ball_radius}
+///     \cgalParamDescription{the radius of the ball of R^4 that is the neighborhood instead of the rings: the
+///                           fit of `fit_degree` with a constant term over the part of the complex in the ball
+///                           joined to the vertex inside it, as `paraboloid_fitting_curvatures()` does on surfaces
+///                           (see Curvature at a scale there), for noisy fields}
+///     \cgalParamType{`double`, positive, in the units of the points}
+///     \cgalParamDefault{none: the rings}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{neighbor_weighting}
+///     \cgalParamDescription{with a `ball_radius` only: `uniform` or `smooth` weights, as for
+///                           `paraboloid_fitting_curvatures()`}
+///     \cgalParamType{`CGAL::Curvature_estimation::Neighbor_weighting`}
+///     \cgalParamDefault{`Neighbor_weighting::uniform`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{neighborhood_rings}
 ///     \cgalParamDescription{number of rings an interior vertex's fit starts with (1: Hamann's platelet)}
 ///     \cgalParamType{`int`, at least 1}
@@ -211,8 +225,7 @@ void put_hypersurface_estimate(const NamedParameters& np, const Vertex& v, const
 /// \cgalNamedParamsEnd
 ///
 /// \throws std::invalid_argument if a parameter is out of its range, a cell index is out of
-///         range, the points do not have 4 coordinates, or `ball_radius` is given
-///         (neighborhoods are set in rings).
+///         range, or the points do not have 4 coordinates.
 template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename TetrahedralComplex,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -225,7 +238,7 @@ void hypersurface_paraboloid_fitting_curvatures(const TetrahedralComplex& comple
   using Fitter = internal::Tetrahedral_platelet_fitter<Stars>;
 
   const internal::Fit_parameters fit =
-    internal::curvature_fit_parameters(np, "hypersurface_paraboloid_fitting_curvatures", 3, false);
+    internal::curvature_fit_parameters(np, "hypersurface_paraboloid_fitting_curvatures", 3, true);
   if (fit.normal_method != Vertex_normal_method::quadric_fit && fit.normal_method != Vertex_normal_method::area_weighted)
     throw std::invalid_argument("hypersurface_paraboloid_fitting_curvatures: vertex_normal_method must be "
                                 "quadric_fit or area_weighted");

@@ -156,7 +156,7 @@ auto parameter_or(const NamedParameters& np, Tag tag, const T& default_value)
 }
 
 // Radius neighborhoods (CGAL 6's `ball_radius`) are implemented by the paraboloid
-// fits of surfaces and jet fitting only: the other estimators refuse a pack that
+// fits and jet fitting only: the other estimators refuse a pack that
 // sets it rather than ignore it, so that a chain written for CGAL's interpolated
 // corrected curvatures does not silently give 1-ring estimates there.
 template <typename NamedParameters>

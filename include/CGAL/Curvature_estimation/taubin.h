@@ -94,7 +94,7 @@ inline bool taubin_shape_matrix(const std::vector<Normal_curvature_sample>& samp
 ///   \ceQuadricFitNormalParameters
 ///   \cgalParamNBegin{neighbor_weighting}
 ///     \cgalParamDescription{the weights of the neighbors: `Neighbor_weighting::area` or `Neighbor_weighting::centroid`
-///                           (`Neighbor_weighting::uniform` is refused)}
+///                           (the others are refused)}
 ///     \cgalParamType{`CGAL::Curvature_estimation::Neighbor_weighting`}
 ///     \cgalParamDefault{`Neighbor_weighting::area` (Taubin's)}
 ///   \cgalParamNEnd
@@ -110,7 +110,7 @@ void taubin_curvatures(const FaceGraph& g, const NamedParameters& np = parameter
 {
   const Neighbor_weighting weighting =
     internal::parameter_or(np, internal_np::neighbor_weighting, Neighbor_weighting::area);
-  if (weighting == Neighbor_weighting::uniform)
+  if (weighting != Neighbor_weighting::area && weighting != Neighbor_weighting::centroid)
     throw std::invalid_argument("taubin_curvatures: neighbor_weighting must be area or centroid");
   const bool area_weights = weighting == Neighbor_weighting::area;
   internal::normal_curvature_sample_curvatures<ConcurrencyTag>(

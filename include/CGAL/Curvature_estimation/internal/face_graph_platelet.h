@@ -46,7 +46,6 @@ public:
   std::size_t ring_end(int r) const { return rings_.ring_end(r); }
   bool center_on_border(Vertex) const { return rings_.center_on_border(); }
 
-  static constexpr bool ball_neighborhoods = true;
   bool grow_ball(double radius, const Eigen::Vector3d& center)
   {
     return rings_.grow_ball(*g_, radius * radius, [&](Vertex w) { return (point(w) - center).squaredNorm(); });

@@ -6,6 +6,7 @@
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_FIT_PARAMETERS_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_FIT_PARAMETERS_H
 
+#include <CGAL/Curvature_estimation/Neighbor_weighting.h>
 #include <CGAL/Curvature_estimation/Vertex_normal_method.h>
 #include <CGAL/Curvature_estimation/parameters.h>
 
@@ -24,6 +25,7 @@ struct Platelet_fit_settings
   double max_condition = 1e3;
   int degree = 2;           // fit_degree: 2 Hamann's fit (and its default normal), 3 or 4 a Taylor fit of that degree
   double ball_radius = 0;   // > 0: the fits over the ball of this radius (see Platelet_fit_core::fit_in_ball), not the rings
+  bool smooth_weights = false;  // in the ball, Neighbor_weighting::smooth (else uniform)
   // Whether test (b) of quadric_fit.h (whitened coordinates) may accept the
   // widest neighborhood where test (a) refuses every one; false: test (a) alone.
   bool whitened_conditioning = true;
@@ -67,9 +69,17 @@ Fit_parameters curvature_fit_parameters(const NamedParameters& np, const char* c
                                         bool with_ball_radius)
 {
   Fit_parameters fit = fit_parameters(np, caller, with_ball_radius);
+  const std::string where = std::string(caller) + ": ";
   fit.settings.degree = parameter_or(np, internal_np::fit_degree, 2);
   if (fit.settings.degree < 2 || fit.settings.degree > max_degree)
-    throw std::invalid_argument(std::string(caller) + ": fit_degree must be in 2.." + std::to_string(max_degree));
+    throw std::invalid_argument(where + "fit_degree must be in 2.." + std::to_string(max_degree));
+  if constexpr (has_parameter<NamedParameters, internal_np::neighbor_weighting_t>()) {
+    const Neighbor_weighting weighting = ::CGAL::parameters::get_parameter(np, internal_np::neighbor_weighting);
+    if (!(fit.settings.ball_radius > 0) ||
+        (weighting != Neighbor_weighting::uniform && weighting != Neighbor_weighting::smooth))
+      throw std::invalid_argument(where + "neighbor_weighting is for fits over a ball_radius: uniform or smooth");
+    fit.settings.smooth_weights = weighting == Neighbor_weighting::smooth;
+  }
   return fit;
 }
 

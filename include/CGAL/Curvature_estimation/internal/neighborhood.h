@@ -21,6 +21,112 @@ namespace CGAL {
 namespace Curvature_estimation {
 namespace internal {
 
+// The ball of a vertex in its mesh, for the collectors below: the vertices inside
+// the ball of a given radius about the center that are joined to it by edges
+// inside the ball (the connected part of the mesh in the ball, so that the other
+// side of a thin part is not taken), grown with the radius.
+template <typename Vertex>
+class Ball
+{
+public:
+  void clear() { active_ = false; }
+  // Whether grow has been called since clear.
+  bool active() const { return active_; }
+
+  // Grows the ball to the squared radius `squared_radius` in `vertices`, the
+  // collector's gathered vertices: the center first, then the 1-ring up to
+  // `one_ring_end`, which stays gathered whole; the vertices of the ball met
+  // beyond it are appended. neighbors(v, visit) calls visit(w) for each neighbor
+  // w of v; reach(w) marks w as met, false where it was already;
+  // squared_distance(w) is the squared distance of w to the center (NaN where
+  // unknown: never inside). The ball is then the vertices i with inside(i),
+  // size() of them, the center included. Returns whether vertices joined to the
+  // ball are left outside it (false: the component is exhausted).
+  template <typename Neighbors, typename Reach, typename SquaredDistance>
+  bool grow(std::vector<Vertex>& vertices, std::size_t one_ring_end, double squared_radius, const Neighbors& neighbors,
+            const Reach& reach, const SquaredDistance& squared_distance)
+  {
+    to_expand_.clear();
+    if (!active_) {
+      active_ = true;
+      outside_.clear();
+      inside_.assign(vertices.size(), 0);
+      size_ = 0;
+      add(vertices, 0);
+      for (std::size_t i = 1; i < one_ring_end; ++i) {
+        const double d = squared_distance(vertices[i]);
+        if (d <= squared_radius)
+          add(vertices, i);
+        else
+          outside_.push_back({vertices[i], d, i});
+      }
+    } else {
+      std::size_t kept = 0;
+      for (const Outside& o : outside_)
+        if (o.squared_distance <= squared_radius)
+          add(vertices, o.index, o.vertex);
+        else
+          outside_[kept++] = o;
+      outside_.resize(kept);
+    }
+    while (!to_expand_.empty()) {
+      const Vertex v = to_expand_.back();
+      to_expand_.pop_back();
+      neighbors(v, [&](const Vertex& w) {
+        if (!reach(w))
+          return;
+        const double d = squared_distance(w);
+        if (d <= squared_radius)
+          add(vertices, not_gathered, w);
+        else
+          outside_.push_back({w, d, not_gathered});
+      });
+    }
+    return !outside_.empty();
+  }
+
+  bool inside(std::size_t i) const { return inside_[i] != 0; }
+  std::size_t size() const { return size_; }
+  // Whether w was met next to the ball but outside it.
+  bool met_outside(const Vertex& w) const
+  {
+    for (const Outside& o : outside_)
+      if (o.vertex == w)
+        return true;
+    return false;
+  }
+
+private:
+  static constexpr std::size_t not_gathered = std::size_t(-1);
+
+  // Puts vertices[index] in the ball, or where not gathered, w appended to them.
+  void add(std::vector<Vertex>& vertices, std::size_t index, const Vertex& w = Vertex())
+  {
+    if (index == not_gathered) {
+      index = vertices.size();
+      vertices.push_back(w);
+      inside_.push_back(0);
+    }
+    inside_[index] = 1;
+    to_expand_.push_back(vertices[index]);
+    ++size_;
+  }
+
+  // A vertex met next to the ball but outside it; index: where gathered (the
+  // 1-ring), its place in the vertices.
+  struct Outside
+  {
+    Vertex vertex;
+    double squared_distance;
+    std::size_t index;
+  };
+  bool active_ = false;
+  std::vector<char> inside_;  // per gathered vertex
+  std::size_t size_ = 0;
+  std::vector<Outside> outside_;
+  std::vector<Vertex> to_expand_;  // in the ball, their neighbors still to be met
+};
+
 // The buffers are reused from vertex to vertex: no allocation once they have
 // reached the size of the largest neighborhood met.
 template <typename FaceGraph>
@@ -36,7 +142,7 @@ public:
     vertices_.clear();
     ring_ends_.clear();
     stamped_ = false;
-    in_ball_ = false;
+    ball_.clear();
     vertices_.push_back(center);
     ring_ends_.push_back(1);
     center_on_border_ = false;
@@ -89,69 +195,32 @@ public:
   }
 
   // After start(), instead of extend(): adds, as one ring after the 1-ring, the
-  // vertices inside the ball of squared radius `squared_radius` about the center
-  // that are joined to it by edges inside the ball: the connected part of the mesh
-  // in the ball, so that the other side of a thin part is not taken. The 1-ring
-  // stays gathered whole: the ball is the vertices i of vertices() with
-  // inside_ball(i), ball_size() of them, the center included. squared_distance(w)
-  // gives the squared distance of w to the center (NaN where unknown: never
-  // inside). Called again with a larger radius, it grows the same ball. Returns
-  // whether vertices joined to the ball are left outside it (false: the
-  // component is exhausted).
+  // vertices of the ball of squared radius `squared_radius` about the center (see
+  // Ball::grow, which returns the result), by halfedge circulation.
   template <typename SquaredDistance>
   bool grow_ball(const FaceGraph& g, double squared_radius, const SquaredDistance& squared_distance)
   {
-    to_expand_.clear();
-    if (!in_ball_) {
-      in_ball_ = true;
-      outside_.clear();
+    if (!ball_.active()) {
       if constexpr (indexed)
         if (!stamped_)
           stamp_gathered();
-      inside_.assign(vertices_.size(), 0);
-      enter_ball(0);
-      for (std::size_t i = 1; i < ring_ends_[1]; ++i) {
-        const double d = squared_distance(vertices_[i]);
-        if (d <= squared_radius)
-          enter_ball(i);
-        else
-          outside_.push_back({vertices_[i], d, i});
-      }
-      ball_size_ = to_expand_.size();
       ring_ends_.push_back(vertices_.size());
-    } else {
-      std::size_t kept = 0;
-      for (const Outside& o : outside_)
-        if (o.squared_distance <= squared_radius)
-          add_to_ball(o.vertex, o.index);
-        else
-          outside_[kept++] = o;
-      outside_.resize(kept);
     }
-    while (!to_expand_.empty()) {
-      const vertex_descriptor v = to_expand_.back();
-      to_expand_.pop_back();
+    const auto neighbors = [&](vertex_descriptor v, const auto& visit) {
       const halfedge_descriptor h = halfedge(v, g);
-      if (h == boost::graph_traits<FaceGraph>::null_halfedge())
-        continue;
-      for (halfedge_descriptor incoming : halfedges_around_target(h, g)) {
-        const vertex_descriptor w = source(incoming, g);
-        if (!reach(w))
-          continue;
-        const double d = squared_distance(w);
-        if (d <= squared_radius)
-          add_to_ball(w, not_gathered);
-        else
-          outside_.push_back({w, d, not_gathered});
-      }
-    }
+      if (h != boost::graph_traits<FaceGraph>::null_halfedge())
+        for (halfedge_descriptor incoming : halfedges_around_target(h, g))
+          visit(source(incoming, g));
+    };
+    const bool more = ball_.grow(vertices_, ring_ends_[1], squared_radius, neighbors,
+                                 [&](vertex_descriptor w) { return reach(w); }, squared_distance);
     ring_ends_.back() = vertices_.size();
-    return !outside_.empty();
+    return more;
   }
 
   // After grow_ball: whether vertices()[i] is in the ball, and their number.
-  bool inside_ball(std::size_t i) const { return inside_[i] != 0; }
-  std::size_t ball_size() const { return ball_size_; }
+  bool inside_ball(std::size_t i) const { return ball_.inside(i); }
+  std::size_t ball_size() const { return ball_.size(); }
 
   // Number of rings gathered (1 after start()).
   int rings() const { return static_cast<int>(ring_ends_.size()) - 1; }
@@ -185,27 +254,6 @@ private:
     vertices_.push_back(w);
   }
 
-  static constexpr std::size_t not_gathered = std::size_t(-1);
-
-  // Puts vertices()[i] in the ball, to have its neighbors met.
-  void enter_ball(std::size_t i)
-  {
-    inside_[i] = 1;
-    to_expand_.push_back(vertices_[i]);
-  }
-
-  // Puts w in the ball: vertices()[index], or where not gathered, a new one.
-  void add_to_ball(vertex_descriptor w, std::size_t index)
-  {
-    if (index == not_gathered) {
-      index = vertices_.size();
-      vertices_.push_back(w);
-      inside_.push_back(0);
-    }
-    enter_ball(index);
-    ++ball_size_;
-  }
-
   // Marks w as reached by the ball; false where it was already (gathered, or
   // met outside the ball).
   bool reach(vertex_descriptor w)
@@ -216,10 +264,7 @@ private:
       for (const vertex_descriptor& u : vertices_)
         if (u == w)
           return false;
-      for (const Outside& o : outside_)
-        if (o.vertex == w)
-          return false;
-      return true;
+      return !ball_.met_outside(w);
     }
   }
 
@@ -254,20 +299,7 @@ private:
   std::vector<vertex_descriptor> vertices_;
   std::vector<std::size_t> ring_ends_;
   std::vector<char> has_face_;  // per incoming halfedge of the center
-  // The ball (grow_ball): whether each gathered vertex is in it; the vertices
-  // met next to it but outside it (index: where gathered, those of the 1-ring,
-  // their place in vertices_); and those whose neighbors are still to be met.
-  struct Outside
-  {
-    vertex_descriptor vertex;
-    double squared_distance;
-    std::size_t index;
-  };
-  bool in_ball_ = false;
-  std::vector<char> inside_;
-  std::size_t ball_size_ = 0;
-  std::vector<Outside> outside_;
-  std::vector<vertex_descriptor> to_expand_;
+  Ball<vertex_descriptor> ball_;
   bool center_on_border_ = false;
   bool one_ring_in_fan_order_ = false;
   bool faces_are_triangles_ = false;
@@ -325,6 +357,7 @@ public:
     }
     vertices_.clear();
     ring_ends_.clear();
+    ball_.clear();
     vertices_.push_back(center);
     stamps_[center] = stamp_;
     ring_ends_.push_back(1);
@@ -343,6 +376,29 @@ public:
     ring_ends_.push_back(vertices_.size());
     return ring_ends_.back() > last;
   }
+
+  // After start(), instead of extend(): the ball of Ring_collector::grow_ball.
+  template <typename Stars, typename SquaredDistance>
+  bool grow_ball(const Stars& stars, double squared_radius, const SquaredDistance& squared_distance)
+  {
+    if (!ball_.active())
+      ring_ends_.push_back(vertices_.size());
+    const auto neighbors = [&](std::size_t v, const auto& visit) {
+      for (std::size_t k = stars.neighbor_offsets[v]; k < stars.neighbor_offsets[v + 1]; ++k)
+        visit(stars.neighbors[k]);
+    };
+    const auto reach = [&](std::size_t w) {
+      if (stamps_[w] == stamp_)
+        return false;
+      stamps_[w] = stamp_;
+      return true;
+    };
+    const bool more = ball_.grow(vertices_, ring_ends_[1], squared_radius, neighbors, reach, squared_distance);
+    ring_ends_.back() = vertices_.size();
+    return more;
+  }
+  bool inside_ball(std::size_t i) const { return ball_.inside(i); }
+  std::size_t ball_size() const { return ball_.size(); }
 
   int rings() const { return static_cast<int>(ring_ends_.size()) - 1; }
   const std::vector<std::size_t>& vertices() const { return vertices_; }
@@ -365,6 +421,7 @@ private:
   unsigned stamp_ = 0;
   std::vector<std::size_t> vertices_;
   std::vector<std::size_t> ring_ends_;
+  Ball<std::size_t> ball_;
 };
 
 } // namespace internal

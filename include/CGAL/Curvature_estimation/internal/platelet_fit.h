@@ -11,7 +11,6 @@
 //   point(v)                                the point of v in double
 //   start(v), extend(), rings(), vertices(), ring_end(r)
 //                                           the k-rings of v, grown one ring at a time
-//   ball_neighborhoods                      whether it has these three:
 //   grow_ball(radius, center), inside_ball(i), ball_size()
 //                                           after start(v), instead of extend(): the vertices
 //                                           joined to v inside the ball of that radius about
@@ -69,6 +68,15 @@ constexpr double cubic_normal_condition_factor = 1e3;
 // fits accepted at 1e6; ten times lower widens 30% of them and triples the
 // Delaunay maxima. The degree-4 fit's errors do not change between 1e7 and 1e9.
 constexpr double degree_condition_factor(int degree) { return degree == 3 ? 1e2 : 1e5; }
+
+// The condition thresholds of the fits over a ball (ball_radius), over those of
+// the ring fits of the same degree. With a constant term, a ball whose vertex is
+// at its edge (a corner of the domain) is one-sided for the constant and linear
+// terms too. Measured: the corner balls of 2.5 steps of a jittered cube of
+// tetrahedra need 1e3 to 1e4 at degree 2 (1e5 to 1e6 at 3) and were refused below;
+// at the corners of Delaunay squares a ball refused at 1e3 grows, and its wider
+// one-sided fit has 2.6 times the largest H error of the fit accepted at 1e4.
+constexpr double ball_condition_factor = 10;
 
 template <typename Neighborhood>
 class Platelet_fit_core
@@ -221,10 +229,10 @@ private:
 
   bool in_ball() const { return settings_.ball_radius > 0; }
 
-  // The fits over the ball of radius ball_radius (ball_neighborhoods only): the
+  // The fits over the ball of radius ball_radius: the
   // Taylor polynomial of fit_degree with a constant term (the vertex is a sample,
   // not a point the fit must pass through: its noise would enter the curvature
-  // divided by the squared radius) and linear terms, unweighted, in the frame of
+  // divided by the squared radius) and linear terms, unweighted (or smooth_weights), in the frame of
   // `normal` (first order), then again in the frame of the normal corrected by
   // the fitted gradient. The ball grows as fit_in_growing_ball says, while test
   // (a) and then (b) refuse the fit; status widened where it grew.
@@ -259,33 +267,29 @@ private:
   template <typename Fit>
   int fit_ball(Vector& normal, Fit& fit)
   {
-    if constexpr (!Neighborhood::ball_neighborhoods)
+    const double max_condition =
+      ball_condition_factor * (settings_.degree == 2 ? 1 : degree_condition_factor(settings_.degree)) * settings_.max_condition;
+    const auto accepted = [&](const Vector& frame_normal) {
+      const Tangents tangents = tangent_basis<N>(frame_normal);
+      if (fit_in_frame(frame_normal, tangents, 0, max_condition, fit))
+        return true;
+      const auto samples = [&](const auto& add) { for_each_sample<Fit>(frame_normal, tangents, 0, add); };
+      return settings_.whitened_conditioning && fit.solve_whitened(max_condition, samples);
+    };
+    const int growths = fit_in_growing_ball(
+      1.0, Fit::unknowns, [&](double radius) { return reach_ball(radius); },
+      [&] { return neighborhood_.ball_size(); }, [&] { return accepted(normal); });
+    if (growths == 0)
       return 0;
-    else {
-      const double max_condition = settings_.degree == 2 ? settings_.max_condition
-                                                         : degree_condition_factor(settings_.degree) * settings_.max_condition;
-      const auto accepted = [&](const Vector& frame_normal) {
-        const Tangents tangents = tangent_basis<N>(frame_normal);
-        if (fit_in_frame(frame_normal, tangents, 0, max_condition, fit))
-          return true;
-        const auto samples = [&](const auto& add) { for_each_sample<Fit>(frame_normal, tangents, 0, add); };
-        return settings_.whitened_conditioning && fit.solve_whitened(max_condition, samples);
-      };
-      const int growths = fit_in_growing_ball(
-        1.0, Fit::unknowns, [&](double radius) { return reach_ball(radius); },
-        [&] { return neighborhood_.ball_size(); }, [&] { return accepted(normal); });
-      if (growths == 0)
+    const Vector first = normal;
+    if (!correct_normal(normal, tangent_basis<N>(normal), fit.gradient()))
+      return 0;
+    if (!accepted(normal)) {  // keep the first frame's fit
+      normal = first;
+      if (!accepted(normal))
         return 0;
-      const Vector first = normal;
-      if (!correct_normal(normal, tangent_basis<N>(normal), fit.gradient()))
-        return 0;
-      if (!accepted(normal)) {  // keep the first frame's fit
-        normal = first;
-        if (!accepted(normal))
-          return 0;
-      }
-      return growths;
     }
+    return growths;
   }
 
   // Grows the ball to `radius` (in units of the ball radius); false when no
@@ -298,6 +302,7 @@ private:
       finite_.push_back(all_finite(offsets_.back()));
     }
     ball_neighbors_ = neighborhood_.ball_size() - 1;
+    ball_squared_radius_ = radius * radius;
     return more;
   }
 
@@ -551,7 +556,7 @@ private:
   // cubic fits of fit_degree 2 only (see cubic_normal_min_rings); Hamann's fit and
   // the fits of fit_degree 3 and 4, over the rings their degree needs, are unweighted.
   // The fits with a constant term are those over a ball (rings ignored): its
-  // samples, the vertex too, unweighted.
+  // samples, the vertex too, unweighted or with Neighbor_weighting::smooth.
   template <typename Fit, typename Add>
   void for_each_sample(const Vector& normal, const Tangents& tangents, int rings, const Add& add) const
   {
@@ -559,8 +564,11 @@ private:
     if constexpr (Fit::constant_term) {
       for (std::size_t i = 0; i < offsets_.size(); ++i) {
         const Vector& q = offsets_[i];
-        if (finite_[i] && neighborhood_.inside_ball(i))
-          add(Eigen::Matrix<double, D, 1>(to_tangent * q), normal.dot(q), 1.0);
+        if (finite_[i] && neighborhood_.inside_ball(i)) {
+          const double falloff = 1 - q.squaredNorm() / ball_squared_radius_;
+          add(Eigen::Matrix<double, D, 1>(to_tangent * q), normal.dot(q),
+              settings_.smooth_weights ? falloff * falloff : 1.0);
+        }
       }
       return;
     }
@@ -586,6 +594,7 @@ private:
   // normal). 0: it starts on the settings' rings.
   int curvature_rings_ = 0;
   std::size_t ball_neighbors_ = 0;  // in the ball of the last fit in a ball, the vertex excluded
+  double ball_squared_radius_ = 1;  // its squared radius, in units of scale_
 };
 
 } // namespace internal

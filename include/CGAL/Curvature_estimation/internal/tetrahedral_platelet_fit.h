@@ -57,7 +57,6 @@ public:
   // every fit is ill-conditioned; the fit then starts again from the 1-ring's
   // best-fitting hyperplane.
   static constexpr bool restart_from_hyperplane = true;
-  static constexpr bool ball_neighborhoods = false;  // hypersurface_paraboloid_fitting_curvatures refuses ball_radius
   using Vertex = std::size_t;
   using Estimate = Hypersurface_estimate;
 
@@ -72,6 +71,13 @@ public:
   const std::vector<Vertex>& vertices() const { return rings_.vertices(); }
   std::size_t ring_end(int r) const { return rings_.ring_end(r); }
   bool center_on_border(Vertex v) const { return stars_->on_boundary[v] != 0; }
+
+  bool grow_ball(double radius, const Eigen::Vector4d& center)
+  {
+    return rings_.grow_ball(*stars_, radius * radius, [&](Vertex w) { return (point(w) - center).squaredNorm(); });
+  }
+  bool inside_ball(std::size_t i) const { return rings_.inside_ball(i); }
+  std::size_t ball_size() const { return rings_.ball_size(); }
 
   static bool platelet_for_normal(Vertex_normal_method) { return true; }
 
