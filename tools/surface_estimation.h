@@ -38,12 +38,15 @@ struct Surface_estimates
   Mesh::Property_map<V, CE::Estimation_status> status;
   std::vector<V> file_to_mesh;
   double seconds = 0;  // the estimator's time
+  // With --radius: the balls' radius in mesh units; 0 without it (or where the mesh is empty).
+  double ball_radius = 0;
 
   std::size_t size() const { return file_to_mesh.size(); }
   Row operator[](std::size_t i) const;
 };
 
 // Runs the estimator --method picks; its outputs are property maps added to `mesh`.
+// --radius Nx is N times the mean edge length of `mesh`.
 Surface_estimates estimate(const Options& o, Mesh& mesh, std::vector<V> file_to_mesh);
 
 } // namespace ce_tool
