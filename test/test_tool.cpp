@@ -847,6 +847,34 @@ TEST_F(RadiusTest, MethodsWithoutBallsRejectIt)
   expect_rejected_saying({"--radius", "4x", "--rings", "2", p.string()}, {"--radius", "--rings"});
 }
 
+// The summary: the radius in mesh units and in mean edges, and the mean number of
+// vertices in a ball; a ball wider than the closed surface holds all its vertices.
+TEST_F(RadiusTest, Summary)
+{
+  const Result r = run({"--radius", "4x", p.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ostringstream radius;
+  radius << "radius: " << 4 * mean_edge_length() << " (4 mean edge lengths of " << mean_edge_length() << ")";
+  EXPECT_NE(r.out.find(radius.str()), std::string::npos) << radius.str() << " in\n" << r.out;
+  const std::string neighborhood = "mean neighborhood: ";
+  const std::size_t at = r.out.find(neighborhood);
+  ASSERT_NE(at, std::string::npos) << r.out;
+  // About pi (4 h)^2 over the area per vertex, (sqrt(3) / 2) h^2: 58.
+  const double size = std::strtod(r.out.c_str() + at + neighborhood.size(), nullptr);
+  std::cout << "--radius 4x: " << size << " vertices in a ball on average\n";
+  EXPECT_GT(size, 40);
+  EXPECT_LT(size, 80);
+  const Result all = run({"-m", "jet", "--radius", "3", p.string()});
+  ASSERT_EQ(all.exit_code, 0) << all.err;
+  EXPECT_NE(all.out.find(neighborhood + std::to_string(m.points.size()) + ".0 vertices"), std::string::npos) << all.out;
+  EXPECT_EQ(all.out.find("evenly spaced"), std::string::npos) << all.out;
+  // Over 1000 vertices, the mean is over a sample, and the summary says so: every
+  // third of 2562.
+  const Result sampled = run({"--radius", "2x", file("sphere.off", off(icosphere(4, 1))).string()});
+  ASSERT_EQ(sampled.exit_code, 0) << sampled.err;
+  EXPECT_NE(sampled.out.find("over 854 evenly spaced vertices"), std::string::npos) << sampled.out;
+}
+
 TEST_F(ToolTest, CsvRowsFollowTheFileOrder)
 {
   // Same sphere, vertices written in reverse order: rows reverse too.
