@@ -9,7 +9,9 @@
 #include <gtest/gtest.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Curvature_estimation/mean_edge_length.h>
 #include <CGAL/IO/PLY.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
 #include "kuhn_grid.h"
@@ -264,17 +266,18 @@ struct Indexed
   std::vector<std::vector<std::size_t>> faces;
 };
 
-// Icosphere of radius r (outward faces), `levels` subdivisions of an icosahedron.
-Indexed icosphere(int levels, double r)
+Indexed indexed(const ce_test::Soup& soup)
 {
-  const ce_test::Soup sphere = ce_test::sphere_soup(r, static_cast<unsigned>(levels));
   Indexed m;
-  for (const Eigen::Vector3d& p : sphere.points)
+  for (const Eigen::Vector3d& p : soup.points)
     m.points.push_back({p.x(), p.y(), p.z()});
-  for (const auto& f : sphere.faces)
+  for (const auto& f : soup.faces)
     m.faces.push_back({f[0], f[1], f[2]});
   return m;
 }
+
+// Icosphere of radius r (outward faces), `levels` subdivisions of an icosahedron.
+Indexed icosphere(int levels, double r) { return indexed(ce_test::sphere_soup(r, static_cast<unsigned>(levels))); }
 
 // A closed tetrahedron with outward faces, scaled and shifted.
 Indexed tetrahedron(double s = 1, double dx = 0)
@@ -758,6 +761,120 @@ TEST_F(ToolTest, FitDegrees)
   }
 }
 
+// --radius: the ball's radius in mesh units, or with x in mean edge lengths of
+// the input (an irregular ellipsoid, 642 vertices).
+class RadiusTest : public ToolTest
+{
+protected:
+  const Indexed m = indexed(ce_test::ellipsoid_soup(1.2, 1, 0.8, 3, 0.2));
+  fs::path p;
+
+  void SetUp() override
+  {
+    ToolTest::SetUp();
+    if (!IsSkipped())
+      p = file("ellipsoid.off", off(m));
+  }
+
+  // The mean edge length of m as the tool's mesh has it: the same points (the
+  // OFF has 17 digits) and the same edges, in the same order.
+  double mean_edge_length() const
+  {
+    using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+    std::vector<Point> points;
+    for (const auto& q : m.points)
+      points.emplace_back(q[0], q[1], q[2]);
+    CGAL::Surface_mesh<Point> mesh;
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, m.faces, mesh);
+    return CGAL::Curvature_estimation::mean_edge_length(mesh);
+  }
+
+  // Rejected with one line on stderr that holds every string of `words`.
+  void expect_rejected_saying(const std::vector<std::string>& args, const std::vector<std::string>& words)
+  {
+    std::string what;
+    for (const std::string& a : args)
+      what += a + " ";
+    expect_rejected(args, what);
+    const Result r = run(args);
+    for (const std::string& word : words)
+      EXPECT_NE(r.err.find(word), std::string::npos) << what << ": " << r.err;
+  }
+};
+
+// --radius 4x is --radius 4 * (mean edge length), to the last bit, for the
+// methods that take it; and the ball is used (the rows differ from the rings').
+TEST_F(RadiusTest, InMeanEdgesIsInMeshUnits)
+{
+  std::ostringstream radius;
+  radius.precision(17);
+  radius << 4 * mean_edge_length();
+  for (const std::vector<std::string>& method : {std::vector<std::string>{"-m", "paraboloid"},
+                                                {"-m", "paraboloid", "--fit-degree", "3"},
+                                                {"-m", "jet", "--degree", "3"}}) {
+    auto with = [&](const std::string& r) {
+      std::vector<std::string> args = method;
+      args.insert(args.end(), {"--radius", r});
+      return csv(p, args);
+    };
+    const std::vector<Row> in_edges = with("4x"), in_units = with(radius.str()), rings = csv(p, method);
+    ASSERT_EQ(in_edges.size(), m.points.size()) << method[1];
+    ASSERT_EQ(in_units.size(), m.points.size()) << method[1];
+    std::size_t differ_from_rings = 0;
+    for (std::size_t i = 0; i < in_edges.size(); ++i) {
+      EXPECT_NE(in_edges[i].status, "failed") << method[1] << ", row " << i;
+      EXPECT_EQ(in_edges[i].status, in_units[i].status) << method[1] << ", row " << i;
+      EXPECT_EQ(in_edges[i].values, in_units[i].values) << method[1] << ", row " << i;
+      differ_from_rings += in_edges[i].values != rings[i].values;
+    }
+    EXPECT_EQ(differ_from_rings, in_edges.size()) << method[1];
+  }
+}
+
+TEST_F(RadiusTest, BadValuesAreRejected)
+{
+  for (const std::string bad : {"0", "-1", "abc", "x", "inf", "nan", "0x", "-2x", "4xx", "4 x", "1e400", ""})
+    expect_rejected_saying({"--radius", bad, p.string()}, {"--radius", "'" + bad + "'"});
+  // Finite, but not in mesh units (mean edge length 10).
+  expect_rejected_saying({"--radius", "1e308x", file("large.off", off(tetrahedron(10))).string()},
+                         {"--radius", "mean edge length"});
+}
+
+TEST_F(RadiusTest, MethodsWithoutBallsRejectIt)
+{
+  for (const std::string method : {"curve-network", "gauss-map", "taubin", "chen-schmitt"})
+    expect_rejected_saying({"-m", method, "--radius", "4x", p.string()}, {"--radius", method});
+  expect_rejected_saying({"--radius", "4x", "--rings", "2", p.string()}, {"--radius", "--rings"});
+}
+
+// The summary: the radius in mesh units and in mean edges, and the mean number of
+// vertices in a ball; a ball wider than the closed surface holds all its vertices.
+TEST_F(RadiusTest, Summary)
+{
+  const Result r = run({"--radius", "4x", p.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ostringstream radius;
+  radius << "radius: " << 4 * mean_edge_length() << " (4 mean edge lengths of " << mean_edge_length() << ")";
+  EXPECT_NE(r.out.find(radius.str()), std::string::npos) << radius.str() << " in\n" << r.out;
+  const std::string neighborhood = "mean neighborhood: ";
+  const std::size_t at = r.out.find(neighborhood);
+  ASSERT_NE(at, std::string::npos) << r.out;
+  // About pi (4 h)^2 over the area per vertex, (sqrt(3) / 2) h^2: 58.
+  const double size = std::strtod(r.out.c_str() + at + neighborhood.size(), nullptr);
+  std::cout << "--radius 4x: " << size << " vertices in a ball on average\n";
+  EXPECT_GT(size, 40);
+  EXPECT_LT(size, 80);
+  const Result all = run({"-m", "jet", "--radius", "3", p.string()});
+  ASSERT_EQ(all.exit_code, 0) << all.err;
+  EXPECT_NE(all.out.find(neighborhood + std::to_string(m.points.size()) + ".0 vertices"), std::string::npos) << all.out;
+  EXPECT_EQ(all.out.find("evenly spaced"), std::string::npos) << all.out;
+  // Over 1000 vertices, the mean is over a sample, and the summary says so: every
+  // third of 2562.
+  const Result sampled = run({"--radius", "2x", file("sphere.off", off(icosphere(4, 1))).string()});
+  ASSERT_EQ(sampled.exit_code, 0) << sampled.err;
+  EXPECT_NE(sampled.out.find("over 854 evenly spaced vertices"), std::string::npos) << sampled.out;
+}
+
 TEST_F(ToolTest, CsvRowsFollowTheFileOrder)
 {
   // Same sphere, vertices written in reverse order: rows reverse too.
@@ -1182,6 +1299,10 @@ TEST_F(TetrahedralTest, OptionsThatDoNotApply)
   const fs::path p = graph("g", t, sample(t, [](double x, double, double) { return x; }));
   expect_rejected({"-m", "gauss-map", p.string()}, "gauss-map on .mesh");
   expect_rejected({"-m", "jet", p.string()}, "jet on .mesh");
+  expect_rejected({"--radius", "2x", p.string()}, "--radius on .mesh");
+  const Result radius = run({"--radius", "2x", p.string()});
+  EXPECT_NE(radius.err.find("--radius"), std::string::npos) << radius.err;
+  EXPECT_NE(radius.err.find("paraboloid"), std::string::npos) << radius.err;
   const fs::path ply = dir / "out.ply";
   const Result r = run({"-o", ply.string(), p.string()});
   EXPECT_EQ(r.exit_code, 2);

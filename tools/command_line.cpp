@@ -5,6 +5,7 @@
 #include "tool_error.h"
 
 #include <charconv>
+#include <cmath>
 #include <iostream>
 #include <system_error>
 #include <vector>
@@ -24,6 +25,10 @@ constexpr const char* usage_text =
   "  -o, --output FILE  FILE.csv or FILE.ply (surfaces only); without it, print a summary only\n"
   "      --rings N      neighborhood rings a vertex's estimate starts with (default 1;\n"
   "                     paraboloid, gauss-map, taubin, chen-schmitt, jet, and .mesh input)\n"
+  "      --radius R     instead of rings, fit over the ball of radius R about each vertex (the\n"
+  "                     mesh joined to it by edges inside the ball): R in mesh units, or Nx for N\n"
+  "                     mean edge lengths of INPUT (as in 4x); the ball grows where the fit needs\n"
+  "                     more vertices (status widened); paraboloid and jet on surfaces, not with --rings\n"
   "      --order N      extrapolation order of curve-network, 1..4 (default 1)\n"
   "      --fit-degree D degree of the paraboloid method's fit, 2..4 (default 2: Hamann's paraboloid;\n"
   "                     3 and 4: Taylor fits over 2 and 3 rings, orders 2 and 3 on irregular meshes;\n"
@@ -67,6 +72,20 @@ int parse_int(const std::string& option, const std::string& text, int min_value,
   return value;
 }
 
+// R or Rx: a positive finite number, in mean edge lengths with the x.
+Radius parse_radius(const std::string& option, const std::string& text)
+{
+  const bool in_mean_edges = !text.empty() && text.back() == 'x';
+  double value = 0;
+  const char* first = text.data();
+  const char* last = text.data() + text.size() - (in_mean_edges ? 1 : 0);
+  const auto [ptr, ec] = std::from_chars(first, last, value);
+  if (ec != std::errc() || ptr != last || !(value > 0) || !std::isfinite(value))
+    fail(option + " expects a positive length in mesh units, or a positive number of mean edge lengths "
+                  "followed by x (as in 4x), got '" + text + "'", 2);
+  return {value, in_mean_edges};
+}
+
 } // namespace
 
 std::optional<Options> parse_arguments(int argc, char** argv)
@@ -99,6 +118,8 @@ std::optional<Options> parse_arguments(int argc, char** argv)
       o.output = value(arg);
     } else if (arg == "--rings") {
       o.rings = parse_int(arg, value(arg), 1, 100);
+    } else if (arg == "--radius") {
+      o.radius = parse_radius(arg, value(arg));
     } else if (arg == "--order") {
       o.order = parse_int(arg, value(arg), 1, 4);
     } else if (arg == "--fit-degree") {
@@ -150,6 +171,14 @@ std::optional<Options> parse_arguments(int argc, char** argv)
       fail("PLY output is for surfaces: write the curvatures of tetrahedral input (.mesh) as CSV", 2);
   } else if (!o.scalars.empty()) {
     fail("--scalars applies to tetrahedral input (.mesh) only", 2);
+  }
+  if (o.radius) {
+    if (o.tetrahedral)
+      fail("--radius applies to surfaces only: the paraboloid method on tetrahedral input (.mesh) takes --rings", 2);
+    if (o.method != Method::paraboloid && o.method != Method::jet)
+      fail("--radius applies to the paraboloid and jet methods only, not to '" + o.method_name + "'", 2);
+    if (o.rings)
+      fail("--radius and --rings exclude each other: a neighborhood is a ball or rings", 2);
   }
   if (o.rings && o.method == Method::curve_network)
     fail("--rings does not apply to the curve-network method (it uses mesh lines; see --order)", 2);

@@ -11,6 +11,14 @@ namespace ce_tool {
 enum class Method { paraboloid, curve_network, gauss_map, taubin, chen_schmitt, jet };
 enum class Quantity { k_max, k_min, mean, gaussian };
 
+// --radius: the radius of the neighborhood balls, in mesh units or, with a
+// trailing x, in mean edge lengths of the input mesh.
+struct Radius
+{
+  double value;
+  bool in_mean_edges;
+};
+
 struct Options
 {
   std::string input;
@@ -18,6 +26,7 @@ struct Options
   Method method = Method::paraboloid;
   std::string method_name = "paraboloid";
   std::optional<int> rings;
+  std::optional<Radius> radius;  // paraboloid and jet, surfaces only
   std::optional<int> order;
   std::optional<int> fit_degree;  // paraboloid
   std::optional<int> degree, monge_degree;  // jet

@@ -5,7 +5,8 @@
 //   curvature [options] INPUT
 //     -m, --method  paraboloid | curve-network | gauss-map | taubin | chen-schmitt | jet
 //     -o, --output  FILE.csv | FILE.ply     (without it: print a summary only)
-//     --rings N --order N --degree D --monge-degree D --threads N --color-by Q --scalars FILE.sol
+//     --rings N --radius R|Nx --order N --fit-degree D --degree D --monge-degree D --threads N
+//     --color-by Q --scalars FILE.sol
 //
 // Rows of the CSV (and vertices of the PLY) are the vertices of the INPUT file, in
 // the file's order, even when the polygon soup had to be repaired before it could

@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <iomanip>
 #include <iostream>
+#include <sstream>
 
 namespace ce_tool {
 
@@ -18,6 +20,20 @@ void print_range(const char* name, std::vector<double> values)
   std::sort(values.begin(), values.end());
   std::cout << name << ": min " << values.front() << ", median " << values[values.size() / 2]
             << ", max " << values.back() << '\n';
+}
+
+// --radius: the radius, and the mean number of vertices in a ball.
+void print_ball(const Mesh& mesh, double radius, double mean_edge_length)
+{
+  const Ball_size size = mean_ball_size(mesh, radius);
+  std::ostringstream mean;
+  mean << std::fixed << std::setprecision(1) << size.mean;
+  std::cout << "radius: " << radius << " (" << radius / mean_edge_length << " mean edge lengths of "
+            << mean_edge_length << ")\n"
+            << "mean neighborhood: " << mean.str() << " vertices in a ball (the vertex included, before a fit widens it";
+  if (size.sampled < num_vertices(mesh))
+    std::cout << "; over " << size.sampled << " evenly spaced vertices";
+  std::cout << ")\n";
 }
 
 // The summary's lines after the input's: time, ranges of H and K, status counts.
@@ -57,6 +73,8 @@ void print_surface_summary(const Options& o, const Soup& soup, const Mesh& mesh,
             << "vertices: " << soup.points.size() << " in the file (" << num_vertices(mesh) << " in the mesh, "
             << num_faces(mesh) << " faces)\n"
             << "method: " << o.method_name << '\n';
+  if (rows.ball_radius > 0)
+    print_ball(mesh, rows.ball_radius, rows.mean_edge_length);
   print_estimates(rows, num_vertices(mesh), rows.seconds);
 }
 

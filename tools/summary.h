@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The summary the tool prints on stdout when no output file is asked for: the
-// input, the method, the time, the ranges of H and K and the status counts.
+// input, the method (with --radius, the radius and the mean number of vertices in
+// a ball), the time, the ranges of H and K and the status counts.
 #ifndef CE_TOOLS_SUMMARY_H
 #define CE_TOOLS_SUMMARY_H
 

@@ -4,9 +4,14 @@
 #include "estimation_settings.h"
 
 #include <CGAL/Curvature_estimation.h>
+#include <CGAL/Curvature_estimation/internal/neighborhood.h>
+#include <CGAL/Curvature_estimation/mean_edge_length.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <limits>
+#include <sstream>
 #include <utility>
 
 namespace ce_tool {
@@ -19,8 +24,18 @@ Row failed_row()
   return Row{nan, nan, nan, nan, {nan, nan, nan}, {nan, nan, nan}, CE::Estimation_status::not_estimable};
 }
 
+// The paraboloid or jet fit (the methods that take a ball) with `np`'s neighborhood.
+template <typename Tag, typename NamedParameters>
+void run_fit(const Options& o, const Mesh& mesh, const NamedParameters& np)
+{
+  if (o.method == Method::paraboloid)
+    CE::paraboloid_fitting_curvatures<Tag>(mesh, np.fit_degree(o.fit_degree.value_or(2)));
+  else
+    CE::jet_fitting_curvatures<Tag>(mesh, np.jet_degree(o.degree.value_or(2)).monge_degree(o.monge_degree.value_or(2)));
+}
+
 template <typename Tag>
-void run_estimator(const Options& o, const Mesh& mesh,
+void run_estimator(const Options& o, const Mesh& mesh, double ball_radius,
                    Mesh::Property_map<V, double> H, Mesh::Property_map<V, double> K,
                    Mesh::Property_map<V, CE::Principal_curvatures_and_directions<Kernel>> pcd,
                    Mesh::Property_map<V, CE::Estimation_status> status)
@@ -32,15 +47,15 @@ void run_estimator(const Options& o, const Mesh& mesh,
   const auto ring_np = with_rings(o, np);
   switch (o.method) {
     case Method::paraboloid:
-      CE::paraboloid_fitting_curvatures<Tag>(mesh, ring_np.fit_degree(o.fit_degree.value_or(2)));
+    case Method::jet:
+      if (ball_radius > 0)
+        run_fit<Tag>(o, mesh, np.ball_radius(ball_radius));
+      else
+        run_fit<Tag>(o, mesh, ring_np);
       break;
     case Method::gauss_map: CE::gauss_map_curvatures<Tag>(mesh, ring_np); break;
     case Method::taubin: CE::taubin_curvatures<Tag>(mesh, ring_np); break;
     case Method::chen_schmitt: CE::chen_schmitt_curvatures<Tag>(mesh, ring_np); break;
-    case Method::jet:
-      CE::jet_fitting_curvatures<Tag>(mesh, ring_np.jet_degree(o.degree.value_or(2))
-                                              .monge_degree(o.monge_degree.value_or(2)));
-      break;
     case Method::curve_network:
       CE::curve_network_curvatures<Tag>(mesh, np.extrapolation_order(o.order.value_or(1)));
       break;
@@ -69,11 +84,42 @@ Surface_estimates estimate(const Options& o, Mesh& mesh, std::vector<V> file_to_
   e.pcd = mesh.add_property_map<V, CE::Principal_curvatures_and_directions<Kernel>>("v:ce_pcd").first;
   e.status = mesh.add_property_map<V, CE::Estimation_status>("v:ce_status", CE::Estimation_status::not_estimable).first;
   e.file_to_mesh = std::move(file_to_mesh);
-  if (!is_empty(mesh))
-    e.seconds = run_with_threads(o.threads, [&](auto tag) {
-      run_estimator<decltype(tag)>(o, mesh, e.H, e.K, e.pcd, e.status);
-    });
+  if (is_empty(mesh))
+    return e;
+  if (o.radius) {
+    e.mean_edge_length = CE::mean_edge_length(mesh);
+    e.ball_radius = o.radius->in_mean_edges ? o.radius->value * e.mean_edge_length : o.radius->value;
+    if (!(e.ball_radius > 0) || !std::isfinite(e.ball_radius)) {
+      std::ostringstream message;
+      message << "--radius " << o.radius->value << "x is no positive finite length: the mean edge length of the mesh is "
+              << e.mean_edge_length;
+      fail(message.str(), 2);
+    }
+  }
+  e.seconds = run_with_threads(o.threads, [&](auto tag) {
+    run_estimator<decltype(tag)>(o, mesh, e.ball_radius, e.H, e.K, e.pcd, e.status);
+  });
   return e;
+}
+
+Ball_size mean_ball_size(const Mesh& mesh, double radius)
+{
+  const std::size_t n = num_vertices(mesh);
+  const std::size_t stride = std::max<std::size_t>(1, (n + max_ball_samples - 1) / max_ball_samples);
+  CE::internal::Ring_collector<Mesh> ball;
+  std::size_t i = 0, sum = 0;
+  Ball_size result;
+  for (const V v : vertices(mesh))
+    if (i++ % stride == 0) {
+      const Point& center = mesh.point(v);
+      ball.start(v, mesh);
+      ball.grow_ball(mesh, radius * radius, [&](V w) { return CGAL::squared_distance(mesh.point(w), center); });
+      sum += ball.ball_size();
+      ++result.sampled;
+    }
+  if (result.sampled != 0)
+    result.mean = double(sum) / double(result.sampled);
+  return result;
 }
 
 } // namespace ce_tool

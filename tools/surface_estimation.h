@@ -38,13 +38,33 @@ struct Surface_estimates
   Mesh::Property_map<V, CE::Estimation_status> status;
   std::vector<V> file_to_mesh;
   double seconds = 0;  // the estimator's time
+  // With --radius: the balls' radius in mesh units and the mean edge length of the
+  // mesh; 0 without it (or where the mesh is empty).
+  double ball_radius = 0, mean_edge_length = 0;
 
   std::size_t size() const { return file_to_mesh.size(); }
   Row operator[](std::size_t i) const;
 };
 
 // Runs the estimator --method picks; its outputs are property maps added to `mesh`.
+// --radius Nx is N times the mean edge length of `mesh`.
 Surface_estimates estimate(const Options& o, Mesh& mesh, std::vector<V> file_to_mesh);
+
+// The number of vertices in the ball of radius `radius` about a vertex of `mesh`,
+// as the ball_radius estimators gather it before they grow it (the vertex and the
+// mesh joined to it by edges inside the ball): its mean over `sampled` vertices,
+// all of them up to max_ball_samples, else at most that many, evenly spaced in the
+// vertex order. On CGAL's bunny, Chinese dragon, armadillo and elephant at 2, 4
+// and 8 mean edge lengths, counting every ball took 40% to 65% of the time of the
+// sequential paraboloid estimate, and the sample's mean was within 2% of the mean
+// over all vertices.
+struct Ball_size
+{
+  double mean = 0;
+  std::size_t sampled = 0;
+};
+constexpr std::size_t max_ball_samples = 1000;
+Ball_size mean_ball_size(const Mesh& mesh, double radius);
 
 } // namespace ce_tool
 
