@@ -155,13 +155,13 @@ public:
     if (method == Vertex_normal_method::quadric_fit && in_ball()) {
       if (!first_order_normal(v, method, gathered, normal))
         return false;
-      return with_ball_fit([&](auto& fit) { return fit_ball(normal, fit) != 0; });
+      return with_fit_of_degree<0>([&](auto& fit) { return fit_ball(normal, fit) != 0; });
     }
     if (method == Vertex_normal_method::quadric_fit && settings_.degree != 2) {
       if (!first_order_normal(v, method, gathered, normal))
         return false;
       const Tangents tangents = tangent_basis<N>(normal);
-      const bool corrected = with_fit_of_degree([&](auto& fit) {
+      const bool corrected = with_fit_of_degree<1>([&](auto& fit) {
         return fit_rings_of_degree(normal, tangents, fit) != 0 && correct_normal(normal, tangents, fit.gradient());
       });
       if (corrected)
@@ -239,27 +239,10 @@ private:
   Estimate fit_in_ball(const Vector& normal)
   {
     Vector corrected = normal;
-    return with_ball_fit([&](auto& fit) {
+    return with_fit_of_degree<0>([&](auto& fit) {
       const int growths = fit_ball(corrected, fit);
       return growths != 0 ? curvature_estimate(corrected, tangent_basis<N>(corrected), growths, 1, fit) : Estimate();
     });
-  }
-
-  // use(fit) with the Taylor fit of the settings' degree with constant and linear terms.
-  template <typename Use>
-  auto with_ball_fit(const Use& use)
-  {
-    if constexpr (D == 2)
-      if (settings_.degree == 4) {
-        Taylor_fit<D, 0, 4> fit;
-        return use(fit);
-      }
-    if (settings_.degree == 3) {
-      Taylor_fit<D, 0, 3> fit;
-      return use(fit);
-    }
-    Taylor_fit<D, 0, 2> fit;
-    return use(fit);
   }
 
   // The fit of fit_in_ball, accepted in the frame of `normal`, which it corrects:
@@ -484,22 +467,28 @@ private:
   Estimate fit_of_degree(const Vector& normal)
   {
     const Tangents tangents = tangent_basis<N>(normal);
-    return with_fit_of_degree([&](auto& fit) {
+    return with_fit_of_degree<1>([&](auto& fit) {
       const int rings = fit_rings_of_degree(normal, tangents, fit);
       return rings != 0 ? curvature_estimate(normal, tangents, rings, first_rings_of_degree(fit), fit) : Estimate();
     });
   }
 
-  // use(fit) with a Taylor fit of the settings' degree (3 or 4) with linear terms.
-  template <typename Use>
+  // use(fit) with a Taylor fit of the settings' degree with the terms of orders
+  // FirstOrder to the degree: 1 for the ring fits of fit_degree 3 and 4, 0 (a
+  // constant term too) for the ball fits of every degree.
+  template <int FirstOrder, typename Use>
   auto with_fit_of_degree(const Use& use)
   {
     if constexpr (D == 2)
       if (settings_.degree == 4) {
-        Taylor_fit<D, 1, 4> fit;
+        Taylor_fit<D, FirstOrder, 4> fit;
         return use(fit);
       }
-    Taylor_fit<D, 1, 3> fit;
+    if (FirstOrder == 1 || settings_.degree == 3) {
+      Taylor_fit<D, FirstOrder, 3> fit;
+      return use(fit);
+    }
+    Taylor_fit<D, FirstOrder, 2> fit;
     return use(fit);
   }
 
