@@ -79,15 +79,15 @@ def select_estimators(speed, rows):
 
 
 def style(e):
-    """Line style of estimator e, the same in every plot: tab20 has 20 colours for our 10
+    """Line style of estimator e, the same in every plot: tab20 has 20 colours for our 13
     estimators and CGAL's 3 jets, CGAL 6's estimators take Dark2's; the jets are also
-    dashed, CGAL 6's dash-dotted, and every line has its own marker."""
+    dashed, CGAL 6's dash-dotted, and every line has its own marker (23 of them)."""
     i = [name for name, _ in ALL_ESTIMATORS].index(e)
     if e in CGAL6:
         color = plt.get_cmap("Dark2")([name for name, _ in ALL_ESTIMATORS if name in CGAL6].index(e))
     else:
         color = plt.get_cmap("tab20")(i)
-    return {"color": color, "marker": "os^vD<>pPX*hH8d+x1234"[i],
+    return {"color": color, "marker": "os^vD<>pPX*hH8d+x1234|_"[i],
             "ls": "--" if e.startswith("jet") else "-." if e in CGAL6 else "-"}
 
 
