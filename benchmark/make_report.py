@@ -240,6 +240,13 @@ def table(header, rows):
     return "\n".join(out)
 
 
+def save_figure(fig, path, dpi, **layout):
+    """Lays fig out (tight_layout, with its keywords), writes it to path and closes it."""
+    fig.tight_layout(**layout)
+    fig.savefig(path, dpi=dpi)
+    plt.close(fig)
+
+
 def mesh_order(meshes):
     """Grids by size, then real meshes in the benchmark's order."""
     grids = sorted((m for m in meshes if m.startswith("grid_")), key=lambda m: int(m[5:]))
@@ -328,9 +335,7 @@ def speed_section(speed, figures, quick):
     # One legend below both panels: inside, it would hide the lines.
     handles, labels = axes[0].get_legend_handles_labels()
     fig.legend(handles, labels, loc="lower center", ncol=4, fontsize=8)
-    fig.tight_layout(rect=(0, 0.14, 1, 1))
-    fig.savefig(os.path.join(figures, "speed_scaling.png"), dpi=110)
-    plt.close(fig)
+    save_figure(fig, os.path.join(figures, "speed_scaling.png"), 110, rect=(0, 0.14, 1, 1))
 
     if real:
         fig, ax = plt.subplots(figsize=(14, 5.5))
@@ -346,9 +351,7 @@ def speed_section(speed, figures, quick):
         ax.set_title("time per vertex on real meshes, sequential")
         ax.grid(True, axis="y", which="both", alpha=0.3)
         ax.legend(fontsize=8)
-        fig.tight_layout()
-        fig.savefig(os.path.join(figures, "speed_real_meshes.png"), dpi=110)
-        plt.close(fig)
+        save_figure(fig, os.path.join(figures, "speed_real_meshes.png"), 110)
 
     lines += ["![time per vertex on grids](figures/speed_scaling.png)", ""]
     lines += ["Time per vertex against grid size (log-log); the dotted line is the %g ns target. "
@@ -563,10 +566,8 @@ def accuracy_section(rows, figures):
                 ax.set_ylabel("RMS error of %s" % quantity)
                 ax.grid(True, which="both", alpha=0.3)
                 ax.legend(fontsize=6)
-        fig.tight_layout()
         name = "accuracy_%s.png" % s
-        fig.savefig(os.path.join(figures, name), dpi=90)
-        plt.close(fig)
+        save_figure(fig, os.path.join(figures, name), 90)
         lines += ["![%s](figures/%s)" % (s, name), ""]
 
     # Details.
@@ -607,11 +608,10 @@ def accuracy_section(rows, figures):
 # Bunny pictures
 # ---------------------------------------------------------------------------
 
-def bunny_section(accuracy_dir, figures):
-    vpath = os.path.join(accuracy_dir, "bunny_mean_curvature.csv")
-    fpath = os.path.join(accuracy_dir, "bunny_faces.csv")
-    if not (os.path.exists(vpath) and os.path.exists(fpath)):
-        return ["## The bunny", "", "No bunny output (accuracy_runner did not write it).", ""]
+def bunny_figure(vpath, fpath, title, path):
+    """Renders the bunny of fpath (three vertex indices per row) once per column of H of vpath
+    (x,y,z, then one column per name), four panels a row, titled title(name), in one colour scale,
+    into path. Returns the number of vertices and the bounds of the colour scale."""
     with open(vpath) as f:
         header = f.readline().strip().split(",")
     values = np.genfromtxt(vpath, delimiter=",", skip_header=1)
@@ -622,7 +622,7 @@ def bunny_section(accuracy_dir, figures):
     pts = xyz[:, [0, 2, 1]]
     tris = pts[faces]
     # One colour scale for all panels, clamped at the 5th and 95th percentiles of H over every
-    # estimator (the scanned bunny is noisy: a few per cent of the vertices have |H| ten times
+    # panel (the scanned bunny is noisy: a few per cent of the vertices have |H| ten times
     # the median and would wash the rest out), and centred on 0 so that the colour tells the sign.
     lo_h, hi_h = (float(x) for x in np.nanpercentile(values[:, 3:], [5, 95]))
     if lo_h < 0 < hi_h:
@@ -630,7 +630,7 @@ def bunny_section(accuracy_dir, figures):
     else:
         norm = matplotlib.colors.Normalize(lo_h, hi_h)
     cmap = matplotlib.colormaps["coolwarm"]
-    ncols = 4
+    ncols = min(4, len(names))
     nrows = int(math.ceil(len(names) / ncols))
     fig = plt.figure(figsize=(4.5 * ncols, 4.2 * nrows))
     lo, hi = pts.min(axis=0), pts.max(axis=0)
@@ -647,19 +647,29 @@ def bunny_section(accuracy_dir, figures):
         ax.set_box_aspect(hi - lo, zoom=1.6)  # the default leaves the bunny small in its panel
         ax.view_init(elev=10, azim=-80)
         ax.set_axis_off()
-        ax.set_title(LABEL.get(name, name), fontsize=10)
+        ax.set_title(title(name), fontsize=10)
     fig.subplots_adjust(left=0, right=0.92, bottom=0, top=0.95, wspace=0, hspace=0.05)
     cax = fig.add_axes([0.94, 0.2, 0.012, 0.6])
     fig.colorbar(matplotlib.cm.ScalarMappable(norm=norm, cmap=cmap), cax=cax, label="mean curvature H")
-    fig.savefig(os.path.join(figures, "bunny_mean_curvature.png"), dpi=72)  # ~1 MB: it is committed
+    fig.savefig(path, dpi=72)  # ~1 MB for the bunny of every estimator: it is committed
     plt.close(fig)
+    return len(xyz), lo_h, hi_h
+
+
+def bunny_section(accuracy_dir, figures):
+    vpath = os.path.join(accuracy_dir, "bunny_mean_curvature.csv")
+    fpath = os.path.join(accuracy_dir, "bunny_faces.csv")
+    if not (os.path.exists(vpath) and os.path.exists(fpath)):
+        return ["## The bunny", "", "No bunny output (accuracy_runner did not write it).", ""]
+    vertices, lo_h, hi_h = bunny_figure(vpath, fpath, lambda name: LABEL.get(name, name),
+                                        os.path.join(figures, "bunny_mean_curvature.png"))
     return ["## The bunny coloured by mean curvature", "",
             "![bunny](figures/bunny_mean_curvature.png)", "",
             "`bunny00.off` (%s vertices, about 1 unit across), face colour = mean of its vertices' H, one colour "
             "scale for every panel, clamped at [%.3g, %.3g] (5th and 95th percentiles of H over all estimators) "
             "and centred on 0; grey = not estimable. The \"given normals\" panel is given the package's default "
             "normal estimate. Red: H > 0 (convex with outward normals), blue: H < 0." % (
-                "{:,}".format(len(xyz)), lo_h, hi_h), ""]
+                "{:,}".format(vertices), lo_h, hi_h), ""]
 
 
 # ---------------------------------------------------------------------------
