@@ -21,15 +21,34 @@
 // The estimator `paraboloid_given_normals` is given the EXACT normals here: it shows
 // what the fit does when the normals are not the limiting factor.
 //
-// DIR/bunny_mean_curvature.csv (x,y,z and one column of H per estimator that gives H) and
-// DIR/bunny_faces.csv (three vertex indices per row) for the report's pictures.
+// DIR/noise_radius.csv, the report's noise section: the noisy ellipsoid of
+// test/common/noisy_meshes.h (10,242 vertices; 2,562 with --quick), seeds 1, 2 and 3, and
+// every estimator of ball_estimators() at radii of 1, 2, 3, 4, 6 and 8 mean edge lengths
+// h (of the noisy mesh); one row per estimator x seed x radius:
+//   estimator,seed,vertices,h,sigma,radius_edges,ball_vertices,H_rms,H_max,K_rms,widened,ns_per_vertex
+// sigma is the noise's standard deviation; ball_vertices the mean number of vertices in
+// the balls of that radius (the connected part of the mesh in the ball, the center
+// included) before any widening, `widened` the number of vertices whose estimate is
+// `widened`; ns_per_vertex the time of the call on one thread (Sequential_tag). The
+// default paraboloid fit (1-ring) and the Gauss map are there too, for reference, with
+// radius_edges and ball_vertices empty.
+//
+// DIR/bunny_mean_curvature.csv (x,y,z and one column of H per estimator that gives H),
+// DIR/bunny_ball_mean_curvature.csv (x,y,z and H of the default paraboloid fit over its
+// 1-ring, `paraboloid`, and over balls of 2 and 6 mean edge lengths, `ball_2h` and
+// `ball_6h`) and DIR/bunny_faces.csv (three vertex indices per row) for the report's pictures.
 // DIR/cgal_version.txt: the CGAL this runner was compiled against (CGAL_VERSION_STR).
 #include "estimators.h"
 
 #include "estimator_runs.h"
+#include "noisy_meshes.h"
 #include "test_surfaces.h"
 
+#include <CGAL/Curvature_estimation/internal/neighborhood.h>
+
+#include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -38,6 +57,7 @@
 #include <iostream>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -162,13 +182,19 @@ void write_rows(std::ostream& out, const Case& c, double h, const Estimator_info
   }
 }
 
-void run_accuracy(bool quick, const std::string& path)
+// Opens `path` for CSV rows (numbers to 9 significant digits) and writes its header line.
+std::ofstream csv_file(const std::string& path, const std::string& header)
 {
   std::ofstream out(path);
-  if (!out)
+  if (!(out << std::setprecision(9) << header << '\n'))
     throw std::runtime_error("cannot write " + path);
-  out << std::setprecision(9);
-  out << "surface,mesh,level,vertices,h,estimator,region,quantity,rms,max,count,not_estimable\n";
+  return out;
+}
+
+void run_accuracy(bool quick, const std::string& path)
+{
+  std::ofstream out =
+    csv_file(path, "surface,mesh,level,vertices,h,estimator,region,quantity,rms,max,count,not_estimable");
   const int levels = quick ? 2 : 4;
   for (const Series& series : all_series())
     for (int level = 0; level < levels; ++level) {
@@ -189,42 +215,139 @@ void run_accuracy(bool quick, const std::string& path)
     }
 }
 
-// Mean curvature of every estimator on the bunny, for the report's pictures.
+// Runs `estimate(mesh, np)` with every output requested: its estimates, and the wall
+// time of the call in ns per vertex.
+template <typename Estimate>
+std::pair<ce_test::Estimates<Kernel>, double> timed_run(const Mesh& mesh, const Estimate& estimate)
+{
+  double seconds = 0;
+  ce_test::Estimates<Kernel> e = ce_test::run_with_all_outputs<Kernel>(
+    mesh,
+    [&](const Mesh& m, const auto& np) {
+      const auto start = std::chrono::steady_clock::now();
+      estimate(m, np);
+      seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    },
+    CE::parameters::default_values());
+  return {std::move(e), 1e9 * seconds / double(mesh.number_of_vertices())};
+}
+
+// The mean number of vertices in the balls of radius `radius` of the vertices of `mesh`,
+// gathered as the fits over a ball gather them, before they widen any.
+double mean_ball_size(const Mesh& mesh, double radius)
+{
+  CE::internal::Ring_collector<Mesh> collector;
+  std::size_t sum = 0;
+  for (vertex_descriptor v : vertices(mesh)) {
+    const Kernel::Point_3& center = mesh.point(v);
+    collector.start(v, mesh);
+    collector.grow_ball(mesh, radius * radius,
+                        [&](vertex_descriptor w) { return CGAL::squared_distance(mesh.point(w), center); });
+    sum += collector.ball_size();
+  }
+  return double(sum) / double(mesh.number_of_vertices());
+}
+
+// The error against the radius on the noisy ellipsoid: DIR/noise_radius.csv (see the top).
+void run_noise(bool quick, const std::string& path)
+{
+  std::ofstream out = csv_file(
+    path, "estimator,seed,vertices,h,sigma,radius_edges,ball_vertices,H_rms,H_max,K_rms,widened,ns_per_vertex");
+  for (const std::uint32_t seed : {1u, 2u, 3u}) {
+    const auto start = std::chrono::steady_clock::now();
+    const ce_test::Noisy_ellipsoid_soup noisy = ce_test::noisy_ellipsoid_soup(quick ? 4 : 5, seed);
+    const Mesh mesh = ce_test::to_mesh<Mesh>(noisy.soup);
+    const double h = CE::mean_edge_length(mesh);
+    // radius_edges and ball_vertices as written: empty for the references.
+    const auto write = [&](const char* name, const std::string& radius_edges, const std::string& ball_vertices,
+                           const std::pair<ce_test::Estimates<Kernel>, double>& timed) {
+      const ce_test::Curvature_errors errors = ce_test::curvature_errors(timed.first, noisy.exact);
+      const ce_test::Error_stats H = errors.mean.stats();
+      const auto widened =
+        std::count(timed.first.status.begin(), timed.first.status.end(), CE::Estimation_status::widened);
+      out << name << ',' << seed << ',' << mesh.number_of_vertices() << ',' << h << ',' << noisy.sigma << ','
+          << radius_edges << ',' << ball_vertices << ',' << H.rms << ',' << H.max << ','
+          << errors.gaussian.stats().rms << ',' << widened << ',' << timed.second << '\n';
+    };
+    for (const Estimator_info& info : estimators())
+      if (info.id == Estimator::paraboloid || info.id == Estimator::gauss_map)
+        write(info.name, "", "", timed_run(mesh, [&](const Mesh& m, const auto& np) {
+                run<CGAL::Sequential_tag>(info.id, m, Normal_map(), h, np);  // no given normals read
+              }));
+    for (const int edges : {1, 2, 3, 4, 6, 8}) {
+      const std::string ball_vertices = std::to_string(mean_ball_size(mesh, edges * h));
+      for (const Ball_estimator_info& info : ball_estimators())
+        write(info.name, std::to_string(edges), ball_vertices, timed_run(mesh, [&](const Mesh& m, const auto& np) {
+                run_in_ball<CGAL::Sequential_tag>(info.id, m, edges * h, np);
+              }));
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::fprintf(stderr, "noise: ellipsoid, seed %u: %7zu vertices, %6.2f s\n", unsigned(seed),
+                 std::size_t(mesh.number_of_vertices()), seconds);
+  }
+}
+
+// Writes x,y,z and the columns named `names` (one value per vertex, in vertex order) of
+// `mesh` to `path` as CSV.
+void write_vertex_columns(const std::string& path, const Mesh& mesh, const std::vector<std::string>& names,
+                          const std::vector<std::vector<double>>& columns)
+{
+  std::string header = "x,y,z";
+  for (const std::string& name : names)
+    header += ',' + name;
+  std::ofstream out = csv_file(path, header);
+  std::size_t i = 0;
+  for (vertex_descriptor v : vertices(mesh)) {
+    const Kernel::Point_3& p = mesh.point(v);
+    out << p.x() << ',' << p.y() << ',' << p.z();
+    for (const std::vector<double>& column : columns)
+      out << ',' << column[i];
+    out << '\n';
+    ++i;
+  }
+  if (!out)
+    throw std::runtime_error("cannot write " + path);
+}
+
+// Mean curvature of every estimator on the bunny, and of the default paraboloid fit over
+// balls, for the report's pictures.
 void run_bunny(const std::string& dir)
 {
   Mesh mesh = read_real_mesh("bunny00");
   Normal_map normals = mesh.add_property_map<vertex_descriptor, Kernel::Vector_3>("v:given_normal").first;
   CE::estimate_vertex_normals(mesh, normals); // no exact normals on a scanned mesh: the default estimate
   const double h = CE::mean_edge_length(mesh);
-  std::vector<const Estimator_info*> with_H;
+  std::vector<std::string> names, ball_names;
+  std::vector<std::vector<double>> columns, ball_columns;
   for (const Estimator_info& info : estimators())
-    if (info.quantities & gives_H)
-      with_H.push_back(&info);
-  std::vector<std::vector<double>> columns;
-  for (const Estimator_info* info : with_H)
-    columns.push_back(ce_test::run_with_all_outputs<Kernel>(
-                        mesh, [&](const Mesh& m, const auto& np) { run<Tag>(info->id, m, normals, h, np); },
-                        CE::parameters::default_values())
-                        .mean);
+    if (info.quantities & gives_H) {
+      names.push_back(info.name);
+      columns.push_back(ce_test::run_with_all_outputs<Kernel>(
+                          mesh, [&](const Mesh& m, const auto& np) { run<Tag>(info.id, m, normals, h, np); },
+                          CE::parameters::default_values())
+                          .mean);
+      if (info.id == Estimator::paraboloid) {  // the default fit over its 1-ring, then over balls
+        ball_names.push_back(names.back());
+        ball_columns.push_back(columns.back());
+      }
+    }
+  write_vertex_columns(dir + "/bunny_mean_curvature.csv", mesh, names, columns);
 
-  std::ofstream vertices_out(dir + "/bunny_mean_curvature.csv");
-  vertices_out << std::setprecision(9) << "x,y,z";
-  for (const Estimator_info* info : with_H)
-    vertices_out << ',' << info->name;
-  vertices_out << '\n';
-  std::size_t i = 0;
-  for (vertex_descriptor v : vertices(mesh)) {
-    const Kernel::Point_3& p = mesh.point(v);
-    vertices_out << p.x() << ',' << p.y() << ',' << p.z();
-    for (const std::vector<double>& column : columns)
-      vertices_out << ',' << column[i];
-    vertices_out << '\n';
-    ++i;
+  for (const int edges : {2, 6}) {
+    ball_names.push_back("ball_" + std::to_string(edges) + "h");
+    ball_columns.push_back(ce_test::run_with_all_outputs<Kernel>(
+                             mesh,
+                             [&](const Mesh& m, const auto& np) {
+                               run_in_ball<Tag>(Ball_estimator::paraboloid, m, edges * h, np);
+                             },
+                             CE::parameters::default_values())
+                             .mean);
   }
+  write_vertex_columns(dir + "/bunny_ball_mean_curvature.csv", mesh, ball_names, ball_columns);
+
   // A mesh read from a file has no removed elements: vertex indices are 0 .. n-1 in
   // iteration order, the row numbers of bunny_mean_curvature.csv.
-  std::ofstream faces_out(dir + "/bunny_faces.csv");
-  faces_out << "a,b,c\n";
+  std::ofstream faces_out = csv_file(dir + "/bunny_faces.csv", "a,b,c");
   for (Mesh::Face_index f : faces(mesh)) {
     const char* separator = "";
     for (vertex_descriptor v : vertices_around_face(halfedge(f, mesh), mesh)) {
@@ -233,8 +356,8 @@ void run_bunny(const std::string& dir)
     }
     faces_out << '\n';
   }
-  if (!vertices_out || !faces_out)
-    throw std::runtime_error("cannot write the bunny's CSV files in " + dir);
+  if (!faces_out)
+    throw std::runtime_error("cannot write " + dir + "/bunny_faces.csv");
 }
 
 } // namespace
@@ -258,6 +381,7 @@ int main(int argc, char** argv)
     if (!(version << CGAL_VERSION_STR << '\n'))
       throw std::runtime_error("cannot write " + dir + "/cgal_version.txt");
     run_accuracy(quick, dir + "/accuracy.csv");
+    run_noise(quick, dir + "/noise_radius.csv");
     run_bunny(dir);
   } catch (const std::exception& e) {
     std::cerr << "accuracy_runner: " << e.what() << '\n';

@@ -142,6 +142,60 @@ void run_icc(const Mesh& mesh, const NamedParameters& np, const CGALParameters& 
 }
 #endif
 
+/// The estimators the report runs over a ball of any radius (its noise section).
+enum class Ball_estimator
+{
+  paraboloid,     // paraboloid_fitting_curvatures, default fit_degree (2)
+  paraboloid_d3,  // ... fit_degree(3)
+  jet_d2,         // jet_fitting_curvatures, jet_degree(2)
+#if CGAL_VERSION_MAJOR >= 6
+  icc,            // CGAL::Polygon_mesh_processing::interpolated_corrected_curvatures
+#endif
+};
+
+struct Ball_estimator_info
+{
+  Ball_estimator id;
+  const char* name; // identifier in CSV files, as Estimator_info::name
+};
+
+inline const std::vector<Ball_estimator_info>& ball_estimators()
+{
+  static const std::vector<Ball_estimator_info> all = {
+    {Ball_estimator::paraboloid, "paraboloid_ball"},
+    {Ball_estimator::paraboloid_d3, "paraboloid_d3_ball"},
+    {Ball_estimator::jet_d2, "jet_d2_ball"},
+#if CGAL_VERSION_MAJOR >= 6
+    {Ball_estimator::icc, "icc_ball"},
+#endif
+  };
+  return all;
+}
+
+/// Runs estimator `e` on `mesh` over the ball of radius `radius` (mesh units) with the
+/// outputs (and any other parameters) of `np`.
+template <typename ConcurrencyTag, typename NamedParameters>
+void run_in_ball(Ball_estimator e, const Mesh& mesh, double radius, const NamedParameters& np)
+{
+  switch (e) {
+    case Ball_estimator::paraboloid:
+      CE::paraboloid_fitting_curvatures<ConcurrencyTag>(mesh, np.ball_radius(radius));
+      return;
+    case Ball_estimator::paraboloid_d3:
+      CE::paraboloid_fitting_curvatures<ConcurrencyTag>(mesh, np.ball_radius(radius).fit_degree(3));
+      return;
+    case Ball_estimator::jet_d2:
+      CE::jet_fitting_curvatures<ConcurrencyTag>(mesh, np.ball_radius(radius).jet_degree(2));
+      return;
+#if CGAL_VERSION_MAJOR >= 6
+    case Ball_estimator::icc:
+      run_icc(mesh, np, CGAL::parameters::ball_radius(radius));
+      return;
+#endif
+  }
+  throw std::logic_error("ce_bench::run_in_ball: unknown estimator");
+}
+
 /// Runs estimator `e` on `mesh` with the outputs (and any other parameters) of `np`.
 /// `given_normals` is read by `paraboloid_given_normals` only, `h` (the mean edge
 /// length of `mesh`) by the ball radii only.
@@ -166,13 +220,13 @@ void run(Estimator e, const Mesh& mesh, Normal_map given_normals, double h, cons
       CE::paraboloid_fitting_curvatures<ConcurrencyTag>(mesh, np.fit_degree(4));
       return;
     case Estimator::paraboloid_ball_2h:
-      CE::paraboloid_fitting_curvatures<ConcurrencyTag>(mesh, np.ball_radius(2 * h));
+      run_in_ball<ConcurrencyTag>(Ball_estimator::paraboloid, mesh, 2 * h, np);
       return;
     case Estimator::paraboloid_ball_4h:
-      CE::paraboloid_fitting_curvatures<ConcurrencyTag>(mesh, np.ball_radius(4 * h));
+      run_in_ball<ConcurrencyTag>(Ball_estimator::paraboloid, mesh, 4 * h, np);
       return;
     case Estimator::paraboloid_ball_8h:
-      CE::paraboloid_fitting_curvatures<ConcurrencyTag>(mesh, np.ball_radius(8 * h));
+      run_in_ball<ConcurrencyTag>(Ball_estimator::paraboloid, mesh, 8 * h, np);
       return;
     case Estimator::curve_network_1:
       CE::curve_network_curvatures<ConcurrencyTag>(mesh, np.extrapolation_order(1));
@@ -203,10 +257,10 @@ void run(Estimator e, const Mesh& mesh, Normal_map given_normals, double h, cons
       run_icc(mesh, np, CGAL::parameters::default_values());
       return;
     case Estimator::icc_ball_1h:
-      run_icc(mesh, np, CGAL::parameters::ball_radius(h));
+      run_in_ball<ConcurrencyTag>(Ball_estimator::icc, mesh, h, np);
       return;
     case Estimator::icc_ball_2h:
-      run_icc(mesh, np, CGAL::parameters::ball_radius(2 * h));
+      run_in_ball<ConcurrencyTag>(Ball_estimator::icc, mesh, 2 * h, np);
       return;
     case Estimator::icc_our_normals: {
       // Estimated here, so timed with ICC: ICC's default estimates its own normals too.

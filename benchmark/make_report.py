@@ -79,15 +79,15 @@ def select_estimators(speed, rows):
 
 
 def style(e):
-    """Line style of estimator e, the same in every plot: tab20 has 20 colours for our 10
+    """Line style of estimator e, the same in every plot: tab20 has 20 colours for our 13
     estimators and CGAL's 3 jets, CGAL 6's estimators take Dark2's; the jets are also
-    dashed, CGAL 6's dash-dotted, and every line has its own marker."""
+    dashed, CGAL 6's dash-dotted, and every line has its own marker (23 of them)."""
     i = [name for name, _ in ALL_ESTIMATORS].index(e)
     if e in CGAL6:
         color = plt.get_cmap("Dark2")([name for name, _ in ALL_ESTIMATORS if name in CGAL6].index(e))
     else:
         color = plt.get_cmap("tab20")(i)
-    return {"color": color, "marker": "os^vD<>pPX*hH8d+x1234"[i],
+    return {"color": color, "marker": "os^vD<>pPX*hH8d+x1234|_"[i],
             "ls": "--" if e.startswith("jet") else "-." if e in CGAL6 else "-"}
 
 
@@ -240,6 +240,13 @@ def table(header, rows):
     return "\n".join(out)
 
 
+def save_figure(fig, path, dpi, **layout):
+    """Lays fig out (tight_layout, with its keywords), writes it to path and closes it."""
+    fig.tight_layout(**layout)
+    fig.savefig(path, dpi=dpi)
+    plt.close(fig)
+
+
 def mesh_order(meshes):
     """Grids by size, then real meshes in the benchmark's order."""
     grids = sorted((m for m in meshes if m.startswith("grid_")), key=lambda m: int(m[5:]))
@@ -328,9 +335,7 @@ def speed_section(speed, figures, quick):
     # One legend below both panels: inside, it would hide the lines.
     handles, labels = axes[0].get_legend_handles_labels()
     fig.legend(handles, labels, loc="lower center", ncol=4, fontsize=8)
-    fig.tight_layout(rect=(0, 0.14, 1, 1))
-    fig.savefig(os.path.join(figures, "speed_scaling.png"), dpi=110)
-    plt.close(fig)
+    save_figure(fig, os.path.join(figures, "speed_scaling.png"), 110, rect=(0, 0.14, 1, 1))
 
     if real:
         fig, ax = plt.subplots(figsize=(14, 5.5))
@@ -346,9 +351,7 @@ def speed_section(speed, figures, quick):
         ax.set_title("time per vertex on real meshes, sequential")
         ax.grid(True, axis="y", which="both", alpha=0.3)
         ax.legend(fontsize=8)
-        fig.tight_layout()
-        fig.savefig(os.path.join(figures, "speed_real_meshes.png"), dpi=110)
-        plt.close(fig)
+        save_figure(fig, os.path.join(figures, "speed_real_meshes.png"), 110)
 
     lines += ["![time per vertex on grids](figures/speed_scaling.png)", ""]
     lines += ["Time per vertex against grid size (log-log); the dotted line is the %g ns target. "
@@ -563,10 +566,8 @@ def accuracy_section(rows, figures):
                 ax.set_ylabel("RMS error of %s" % quantity)
                 ax.grid(True, which="both", alpha=0.3)
                 ax.legend(fontsize=6)
-        fig.tight_layout()
         name = "accuracy_%s.png" % s
-        fig.savefig(os.path.join(figures, name), dpi=90)
-        plt.close(fig)
+        save_figure(fig, os.path.join(figures, name), 90)
         lines += ["![%s](figures/%s)" % (s, name), ""]
 
     # Details.
@@ -607,11 +608,10 @@ def accuracy_section(rows, figures):
 # Bunny pictures
 # ---------------------------------------------------------------------------
 
-def bunny_section(accuracy_dir, figures):
-    vpath = os.path.join(accuracy_dir, "bunny_mean_curvature.csv")
-    fpath = os.path.join(accuracy_dir, "bunny_faces.csv")
-    if not (os.path.exists(vpath) and os.path.exists(fpath)):
-        return ["## The bunny", "", "No bunny output (accuracy_runner did not write it).", ""]
+def bunny_figure(vpath, fpath, title, path):
+    """Renders the bunny of fpath (three vertex indices per row) once per column of H of vpath
+    (x,y,z, then one column per name), four panels a row, titled title(name), in one colour scale,
+    into path. Returns the number of vertices and the bounds of the colour scale."""
     with open(vpath) as f:
         header = f.readline().strip().split(",")
     values = np.genfromtxt(vpath, delimiter=",", skip_header=1)
@@ -622,7 +622,7 @@ def bunny_section(accuracy_dir, figures):
     pts = xyz[:, [0, 2, 1]]
     tris = pts[faces]
     # One colour scale for all panels, clamped at the 5th and 95th percentiles of H over every
-    # estimator (the scanned bunny is noisy: a few per cent of the vertices have |H| ten times
+    # panel (the scanned bunny is noisy: a few per cent of the vertices have |H| ten times
     # the median and would wash the rest out), and centred on 0 so that the colour tells the sign.
     lo_h, hi_h = (float(x) for x in np.nanpercentile(values[:, 3:], [5, 95]))
     if lo_h < 0 < hi_h:
@@ -630,7 +630,7 @@ def bunny_section(accuracy_dir, figures):
     else:
         norm = matplotlib.colors.Normalize(lo_h, hi_h)
     cmap = matplotlib.colormaps["coolwarm"]
-    ncols = 4
+    ncols = min(4, len(names))
     nrows = int(math.ceil(len(names) / ncols))
     fig = plt.figure(figsize=(4.5 * ncols, 4.2 * nrows))
     lo, hi = pts.min(axis=0), pts.max(axis=0)
@@ -647,19 +647,189 @@ def bunny_section(accuracy_dir, figures):
         ax.set_box_aspect(hi - lo, zoom=1.6)  # the default leaves the bunny small in its panel
         ax.view_init(elev=10, azim=-80)
         ax.set_axis_off()
-        ax.set_title(LABEL.get(name, name), fontsize=10)
+        ax.set_title(title(name), fontsize=10)
     fig.subplots_adjust(left=0, right=0.92, bottom=0, top=0.95, wspace=0, hspace=0.05)
     cax = fig.add_axes([0.94, 0.2, 0.012, 0.6])
     fig.colorbar(matplotlib.cm.ScalarMappable(norm=norm, cmap=cmap), cax=cax, label="mean curvature H")
-    fig.savefig(os.path.join(figures, "bunny_mean_curvature.png"), dpi=72)  # ~1 MB: it is committed
+    fig.savefig(path, dpi=72)  # ~1 MB for the bunny of every estimator: it is committed
     plt.close(fig)
+    return len(xyz), lo_h, hi_h
+
+
+def bunny_section(accuracy_dir, figures):
+    vpath = os.path.join(accuracy_dir, "bunny_mean_curvature.csv")
+    fpath = os.path.join(accuracy_dir, "bunny_faces.csv")
+    if not (os.path.exists(vpath) and os.path.exists(fpath)):
+        return ["## The bunny", "", "No bunny output (accuracy_runner did not write it).", ""]
+    vertices, lo_h, hi_h = bunny_figure(vpath, fpath, lambda name: LABEL.get(name, name),
+                                        os.path.join(figures, "bunny_mean_curvature.png"))
     return ["## The bunny coloured by mean curvature", "",
             "![bunny](figures/bunny_mean_curvature.png)", "",
             "`bunny00.off` (%s vertices, about 1 unit across), face colour = mean of its vertices' H, one colour "
             "scale for every panel, clamped at [%.3g, %.3g] (5th and 95th percentiles of H over all estimators) "
             "and centred on 0; grey = not estimable. The \"given normals\" panel is given the package's default "
             "normal estimate. Red: H > 0 (convex with outward normals), blue: H < 0." % (
-                "{:,}".format(len(xyz)), lo_h, hi_h), ""]
+                "{:,}".format(vertices), lo_h, hi_h), ""]
+
+
+# ---------------------------------------------------------------------------
+# Noise: the error against the radius of the ball
+# ---------------------------------------------------------------------------
+
+# The estimators over a ball of any radius (ball_estimators() of benchmark/estimators.h), with
+# their labels and the estimator of the other sections whose line style each takes.
+BALL_ESTIMATORS = [
+    ("paraboloid_ball", "paraboloid, fit degree 2", "paraboloid_ball_4h"),
+    ("paraboloid_d3_ball", "paraboloid, fit degree 3", "paraboloid_d3"),
+    ("jet_d2_ball", "jet fitting d=2", "jet_d2_2rings"),
+    ("icc_ball", "ICC", "icc_ball_2h"),
+]
+# The references of the noise section, over their usual neighborhoods (no radius).
+NOISE_REFERENCES = ["paraboloid", "gauss_map"]
+
+
+def read_noise(path):
+    rows = []
+    with open(path) as f:
+        for r in csv.DictReader(f):
+            for k in ("seed", "vertices", "widened"):
+                r[k] = int(r[k])
+            for k in ("h", "sigma", "H_rms", "H_max", "K_rms", "ns_per_vertex"):
+                r[k] = float(r[k])
+            # Empty for the references.
+            r["radius_edges"] = int(r["radius_edges"]) if r["radius_edges"] else None
+            r["ball_vertices"] = float(r["ball_vertices"]) if r["ball_vertices"] else None
+            rows.append(r)
+    return rows
+
+
+def noise_bound(runs):
+    """The standard deviation of the coefficient of |x|^2 / 2 of a least-squares fit over N samples,
+    uniform in a disc of radius r, of noise sigma along the normal: sqrt(48) sigma / (sqrt(N) r^2),
+    with N the mean number of vertices in the ball; the mean over the runs (seeds) of one radius."""
+    return float(np.mean([math.sqrt(48) * r["sigma"] /
+                          (math.sqrt(r["ball_vertices"]) * (r["radius_edges"] * r["h"]) ** 2) for r in runs]))
+
+
+def noise_section(accuracy_dir, figures):
+    path = os.path.join(accuracy_dir, "noise_radius.csv")
+    if not os.path.exists(path):
+        return ["## Curvature of a noisy mesh against the radius", "",
+                "No noise output (accuracy_runner did not write it).", ""]
+    rows = read_noise(path)
+    runs = defaultdict(list)  # {(estimator, radius in edges or None): the rows of the seeds}
+    for r in rows:
+        runs[(r["estimator"], r["radius_edges"])].append(r)
+    radii = sorted({r["radius_edges"] for r in rows if r["radius_edges"] is not None})
+    seeds = sorted({r["seed"] for r in rows})
+    ball = [(e, label, like) for e, label, like in BALL_ESTIMATORS if any(k[0] == e for k in runs)]
+    references = [e for e in NOISE_REFERENCES if (e, None) in runs]
+    first = rows[0]
+
+    def mean_of(key, fmt):
+        return lambda v: fmt % np.mean([r[key] for r in v])
+
+    def rms_and_spread(v):
+        x = [r["H_rms"] for r in v]
+        return "%.3g ± %.1g" % (np.mean(x), (max(x) - min(x)) / 2)
+
+    def radius_table(cell, extra_rows=()):
+        header = ["estimator", "default neighborhood"] + ["r = %d h" % r for r in radii]
+        out = [[LABEL.get(e, e), cell(runs[(e, None)])] + ["—"] * len(radii) for e in references]
+        out += [[label, "—"] + [cell(runs[(e, r)]) if (e, r) in runs else "—" for r in radii]
+                for e, label, _ in ball]
+        return table(header, out + list(extra_rows))
+
+    ball_sizes = ["vertices in the ball (mean)", "—"] + [
+        "%.1f" % np.mean([x["ball_vertices"] for x in runs[(ball[0][0], r)]]) for r in radii]
+    lines = ["## Curvature of a noisy mesh against the radius", ""]
+    lines.append("The noisy ellipsoid of the tests (`ce_test::noisy_ellipsoid_soup`, test/common/noisy_meshes.h): "
+                 "semi-axes 1, 0.8 and 0.6, an icosphere of %s vertices jittered by 0.2 of the local spacing, then "
+                 "Gaussian noise of σ = 7%% of the mean edge length in each coordinate; the exact curvature is "
+                 "that of the points before the noise. Seeds %s. The radius r of the ball is in mean edge lengths h of "
+                 "the noisy mesh (`CGAL::Curvature_estimation::mean_edge_length`; seed %d: σ = %.3g, h = %.3g): "
+                 "`ball_radius(r)` of `paraboloid_fitting_curvatures` with fit degree 2 and 3 and of "
+                 "`jet_fitting_curvatures` (CGAL's jet fitting of degree 2)%s. Our fits and jet fitting take the "
+                 "connected part of the mesh in the ball, and widen a ball that holds fewer than twice the fit's "
+                 "unknowns. For reference, the default paraboloid fit and the Gauss map on their usual neighborhoods. "
+                 "Every vertex counts; one thread."
+                 % ("{:,}".format(first["vertices"]), ", ".join(str(s) for s in seeds), first["seed"], first["sigma"],
+                    first["h"], ", and `ball_radius(r)` of CGAL 6's interpolated corrected curvatures (ICC)"
+                    if any(e == "icc_ball" for e, _, _ in ball)
+                    else "; not CGAL 6's interpolated corrected curvatures (ICC): this run was built against an older CGAL"))
+    lines.append("")
+    lines += ["### RMS error of H: mean over the seeds ± half their range", ""]
+    lines += [radius_table(rms_and_spread, [ball_sizes]), ""]
+
+    # Plot: H RMS against the radius, log-log, the seeds' range as error bars.
+    fig, ax = plt.subplots(figsize=(8, 5.5))
+    for e, label, like in ball:
+        pts = [(r, [x["H_rms"] for x in runs[(e, r)]]) for r in radii if (e, r) in runs]
+        xs = [r for r, _ in pts]
+        ys = np.array([np.mean(v) for _, v in pts])
+        err = np.array([[y - min(v) for y, (_, v) in zip(ys, pts)], [max(v) - y for y, (_, v) in zip(ys, pts)]])
+        ax.errorbar(xs, ys, yerr=err, label=label, capsize=3, **style(like))
+    for e in references:
+        ax.axhline(np.mean([x["H_rms"] for x in runs[(e, None)]]), lw=1, label="%s, default neighborhood" % LABEL[e],
+                   **{k: v for k, v in style(e).items() if k != "marker"})
+    bound_radii = [r for r in radii if (ball[0][0], r) in runs]
+    ax.plot(bound_radii, [noise_bound(runs[(ball[0][0], r)]) for r in bound_radii], "k:", lw=1.5,
+            label="least-squares noise bound √48 σ / (√N r²)")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xticks(radii)
+    ax.set_xticklabels([str(r) for r in radii])
+    ax.set_xlabel("ball radius r (mean edge lengths h)")
+    ax.set_ylabel("RMS error of H")
+    ax.set_title("noisy ellipsoid (%s vertices, σ = %.2g h): error of H against the radius" % (
+        "{:,}".format(first["vertices"]), first["sigma"] / first["h"]), fontsize=10)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    save_figure(fig, os.path.join(figures, "noise_radius.png"), 90)
+    lines += ["![H RMS against the radius](figures/noise_radius.png)", ""]
+    lines += ["Log-log; the bars span the seeds. The dotted line is the standard deviation that noise σ along the "
+              "normal leaves in the coefficient of |x|²/2 of a least-squares fit over N samples uniform in a disc "
+              "of radius r, √48 σ / (√N r²), with N the mean number of vertices in the ball (above): while the noise "
+              "dominates, a fit over the ball cannot do better, and the error falls as r⁻³. It does not apply where "
+              "the balls are widened (see below): those fits have more samples than N. Once the ball is large, the "
+              "shape's own variation over it takes over, and the error grows again.", ""]
+
+    lines += ["### Time per vertex (ns, one thread, mean over the seeds) and widened vertices", ""]
+    lines += [radius_table(mean_of("ns_per_vertex", "%.0f")), ""]
+    widened = [[label] + ["%.0f%%" % (100 * np.mean([x["widened"] / x["vertices"] for x in runs[(e, r)]]))
+                          if (e, r) in runs else "—" for r in radii] for e, label, _ in ball]
+    lines += ["Share of the vertices whose estimate is `widened` (the ball grown to hold enough vertices for the "
+              "fit, or to condition it):", ""]
+    lines += [table(["estimator"] + ["r = %d h" % r for r in radii], widened), ""]
+    lines += ["<details><summary>RMS error of K and largest error of H (mean over the seeds)</summary>", ""]
+    lines += ["#### RMS error of K", "", radius_table(mean_of("K_rms", "%.3g")), ""]
+    lines += ["#### Largest error of H", "", radius_table(mean_of("H_max", "%.3g")), ""]
+    lines += ["</details>", ""]
+
+    lines += bunny_radius(accuracy_dir, figures)
+    return lines
+
+
+def bunny_radius(accuracy_dir, figures):
+    """The bunny coloured by the default paraboloid fit over its 1-ring and over two balls."""
+    vpath = os.path.join(accuracy_dir, "bunny_ball_mean_curvature.csv")
+    fpath = os.path.join(accuracy_dir, "bunny_faces.csv")
+    if not (os.path.exists(vpath) and os.path.exists(fpath)):
+        return ["No bunny over balls (accuracy_runner did not write it).", ""]
+
+    def title(name):
+        m = re.match(r"^ball_(\d+)h$", name)
+        return "ball radius %s h" % m.group(1) if m else "%s (1 ring)" % LABEL.get(name, name)
+
+    vertices, lo_h, hi_h = bunny_figure(vpath, fpath, title, os.path.join(figures, "bunny_radius.png"))
+    return ["### The bunny over balls", "",
+            "![bunny over balls](figures/bunny_radius.png)", "",
+            "`bunny00.off` (%s vertices) coloured by H of the default paraboloid fit over its 1-ring and over balls "
+            "(`ball_radius` in mean edge lengths h of the bunny), as in the bunny section: one colour scale, clamped at "
+            "[%.3g, %.3g] (5th and 95th percentiles of H over these panels), centred on 0; red H > 0, blue H < 0. "
+            "The scan's noise fades as the ball grows; where the ball is wider than the surface is round (the rims of the "
+            "ears, whose radius of curvature 1/H is a few edges), the surface in the ball is no graph over the tangent "
+            "plane, and the fit's H changes sign." % ("{:,}".format(vertices), lo_h, hi_h), ""]
 
 
 # ---------------------------------------------------------------------------
@@ -709,6 +879,7 @@ def main():
     lines += speed_section(speed, figures, args.quick)
     lines += accuracy_section(rows, figures)
     lines += bunny_section(args.accuracy_dir, figures)
+    lines += noise_section(args.accuracy_dir, figures)
     if args.end_to_end:
         lines += end_to_end_section(args.end_to_end)
 

@@ -17,7 +17,7 @@
 # Environment: CGAL_DIR, CE_BUILD_DIR (default: build-report, the report's own build
 # directory, configured with the CGAL chosen above at every run; not the tests' build/),
 # CE_JOBS (parallel compile jobs, default 2).
-# Raw outputs (speed.json, accuracy.csv, the bunny's CSVs) stay in BUILD/report[_quick]/.
+# Raw outputs (speed.json, accuracy.csv, noise_radius.csv, the bunny's CSVs) stay in BUILD/report[_quick]/.
 set -euo pipefail
 
 # A relative CGAL_DIR is relative to where the script was started.

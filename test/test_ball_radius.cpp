@@ -37,6 +37,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -168,8 +169,7 @@ TEST(BallRadius, IsTheConnectedPartOfTheMeshInTheBall)
   EXPECT_GT(checked, 100u);
 }
 
-// The noisy ellipsoid of the issue: semi-axes 1, 0.8, 0.6, the icosphere of 4^s 10 + 2 points
-// jittered by 0.2, Gaussian noise of 7% of the mean edge length in each coordinate.
+// The noisy ellipsoid of the issue (ce_test::noisy_ellipsoid_soup) as a mesh.
 struct Noisy_ellipsoid
 {
   Mesh mesh;
@@ -179,11 +179,10 @@ struct Noisy_ellipsoid
 
 Noisy_ellipsoid noisy_ellipsoid(unsigned subdivisions, std::uint32_t seed)
 {
-  ce_test::Soup soup = ce_test::ellipsoid_soup(1, 0.8, 0.6, subdivisions, 0.2, seed);
+  ce_test::Noisy_ellipsoid_soup noisy = ce_test::noisy_ellipsoid_soup(subdivisions, seed);
   Noisy_ellipsoid e;
-  e.exact = ce_test::ellipsoid_curvatures(1, 0.8, 0.6, soup);
-  ce_test::add_gaussian_noise(soup, 0.07, seed);
-  e.mesh = ce_test::to_mesh<Mesh>(soup);
+  e.exact = std::move(noisy.exact);
+  e.mesh = ce_test::to_mesh<Mesh>(noisy.soup);
   e.h = CE::mean_edge_length(e.mesh);
   return e;
 }
@@ -279,8 +278,7 @@ TEST(BallRadius, NoiseFreeMeshesConvergeAtAFixedNumberOfEdges)
 TEST(BallRadius, PolyhedronGivesTheSameEstimatesAsSurfaceMesh)
 {
   using Polyhedron = CGAL::Polyhedron_3<Kernel>;
-  ce_test::Soup soup = ce_test::ellipsoid_soup(1, 0.8, 0.6, 3, 0.2, 5);
-  ce_test::add_gaussian_noise(soup, 0.07, 5);
+  const ce_test::Soup soup = ce_test::noisy_ellipsoid_soup(3, 5).soup;
   const Mesh mesh = ce_test::to_mesh<Mesh>(soup);
   const Polyhedron polyhedron = ce_test::to_mesh<Polyhedron>(soup);
   const double radius = 3 * CE::mean_edge_length(mesh);
