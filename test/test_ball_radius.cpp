@@ -208,10 +208,12 @@ TEST(BallRadius, NoiseErrorFallsWithTheRadius)
                   edges, rms, widened, estimates.status.size());
       EXPECT_LT(rms, 1.05 * previous) << "degree " << degree << ", " << edges << " edges";
       EXPECT_EQ(count_status(estimates, CE::Estimation_status::not_estimable), 0u);
-      if (edges == 1)
+      if (edges == 1) {
         EXPECT_EQ(widened, estimates.status.size());
-      if (edges >= first_whole)
+      }
+      if (edges >= first_whole) {
         EXPECT_LT(widened, estimates.status.size() / 20) << "degree " << degree << ", " << edges << " edges";
+      }
       previous = rms;
       if (edges == first_whole)
         at_first_whole = rms;
