@@ -270,8 +270,10 @@ void expect_paraboloid_no_worse_than_jet(const std::vector<Row>& rows)
 }
 
 // fit_degree(4) against CGAL's jet fitting of degree 4 on 3 rings, at the levels where that runs: the
-// H RMS at most 1.5 times jet's (measured 0.63 to 1.16). The maxima are printed, not asserted: at most
-// 2 times jet's except on the torus at 20 cells (2.5 times: 3 rings there span 70% of the tube's radius).
+// H RMS at most 1.5 times jet's and the maximum at most 2 times (measured: RMS 0.58 to 0.83 times,
+// maxima 0.32 to 1.25 times). The torus at 20 cells, whose 3 rings span 70% of the tube's radius, had
+// 2.5 times jet's maximum when the fit's frame was always the area-weighted normal's (see
+// fit_rings_of_degree in platelet_fit.h).
 void expect_degree_four_near_jet_degree_four(const std::vector<Row>& rows)
 {
   const Row* ours = find_row(rows, "paraboloid d4");
@@ -282,6 +284,7 @@ void expect_degree_four_near_jet_degree_four(const std::vector<Row>& rows)
     std::printf("%-9s %3zu cells: fit_degree(4) / jet d4 on 3 rings: H RMS %.2f, max %.2f\n", ours->surface.c_str(),
                 levels[l], ours->level[l].H.rms / jet->level[l].H.rms, ours->level[l].H.max / jet->level[l].H.max);
     EXPECT_LE(ours->level[l].H.rms, 1.5 * jet->level[l].H.rms) << levels[l] << " cells";
+    EXPECT_LE(ours->level[l].H.max, 2.0 * jet->level[l].H.max) << levels[l] << " cells";
   }
 }
 

@@ -127,16 +127,19 @@ private:
 /// **Higher degrees.** With `fit_degree(3)` or `fit_degree(4)` the fit is a Taylor
 /// polynomial of that degree with linear terms, h(u, v) = g . (u, v) + 1/2 (u, v) C (u, v)^T
 /// + cubic [+ quartic] terms, over 2 or 3 rings (or `neighborhood_rings` if more), in the
-/// frame of the given normal or else of the area-weighted normal (the fitted gradient
-/// corrects it to the fit's order); the curvatures are those of the fitted graph at the
-/// vertex. On irregular meshes (Delaunay meshes of random points, marching-tetrahedra
+/// frame of the given normal or else of the area-weighted normal; for degree 4 without a
+/// given normal, first of the least-squares plane of the vertex and its 3 rings, as CGAL's
+/// jet fitting does (over 3 lopsided, curved rings a frame that leaves the far samples
+/// steep spoils a quartic graph, even the exact normal's), where the fit is
+/// well-conditioned in it. The fitted gradient corrects the frame's normal to the fit's
+/// order, and the curvatures are those of the fitted graph at the vertex. On irregular meshes (Delaunay meshes of random points, marching-tetrahedra
 /// meshes, jittered tori) these converge at orders about 2 and 3 where degree 2 is of
 /// first order, at about 2 and 4 times the cost (see the benchmark report); degree 4 is
 /// about as accurate as CGAL's jet fitting of degree 4 on 3 rings. Widening,
 /// test (b) and the fallback are as for degree 2, with condition thresholds of 100 and
 /// 1e5 times `max_condition_number`, up to `max_neighborhood_rings` rings or one ring
 /// more than the degree's. The degree-3 fit is solved again less the curvature's quartic
-/// term, as above. The normal these fits read their curvatures in (the area-weighted one
+/// term, as above. The normal these fits read their curvatures in (the frame's normal
 /// corrected by the fitted gradient, of order 3 and 4) is what `estimate_vertex_normals()`
 /// writes with the same `fit_degree`.
 ///
