@@ -508,9 +508,10 @@ private:
   // one vertex 0.03, where the exact normal's frame gives 1.1). At a crease the
   // plane is tilted and the fit in it ill-conditioned: the fits in the normal's
   // frame follow, as before (the plane alone made the fallbacks over CGAL's data
-  // meshes 4,416 instead of 2,444; with them they are 2,398). At degree 3, over 2 rings, the plane gained at most
-  // 16% on the maxima elsewhere and made that torus's RMS 11% and largest error
-  // 2.5 times larger, so degree 3 keeps the normal's frame.
+  // meshes 4,416 instead of 2,444; with them they are 2,398). At degree 3, over 2
+  // rings, the plane gained at most 16% on the maxima elsewhere and made that
+  // torus's RMS 11% and largest error 2.5 times larger, so degree 3 keeps the
+  // normal's frame.
   template <typename Fit>
   int fit_rings_of_degree(Vector& normal, Tangents& tangents, bool estimated_normal, Fit& fit)
   {

@@ -73,7 +73,8 @@ bool symmetric_eigen_accurate(const Eigen::Matrix<double, D, D>& m, Eigen::Matri
 
 // The unit normal of the least-squares hyperplane through `count` points: the
 // eigenvector of the smallest eigenvalue of their scatter matrix, in R^3 by Eigen's
-// direct solver (a sixth of the cost), in R^4 by cyclic Jacobi rotations (see above).
+// direct solver (measured: 2.2k instead of 4.4k instructions with 37 points, with the
+// scatter), in R^4 by cyclic Jacobi rotations (see above).
 template <int N>
 Eigen::Matrix<double, N, 1> least_squares_hyperplane_normal(const Eigen::Matrix<double, N, 1>* points,
                                                             std::size_t count)
