@@ -79,7 +79,8 @@
 // Cost. The entry (i, j) of N is sum_k w_k m_i(x_k) m_j(x_k), and m_i m_j is a
 // monomial of degree 2 to 2 LastOrder: N is a table of the moments
 // sum_k w_k x_k^a, fewer than its entries (42 against 105 for surfaces at
-// LastOrder 4, 25 against 45 at 3), which add sums per sample. N = L L^T
+// LastOrder 4, 25 against 45 at 3), which add sums per sample; the right-hand
+// side is summed in the unscaled monomials, scaled once per solve. N = L L^T
 // (Cholesky) is inverted as L^-1 (N^-1 = L^-T L^-1, which also solves), and
 // ||N^-1||_1 <= ||L^-1||_1 ||L^-1||_inf decides test (a) where it is below the
 // threshold; only above it is ||N^-1||_1 computed (as costly as the
@@ -369,11 +370,7 @@ public:
   {
     std::fill(right_hand_side_, right_hand_side_ + unknowns, 0.0);
     samples([&](const Point& x, double height, double weight) {
-      double row[tested];
-      monomials(whitened_ ? Point(whitening_ * x) : x, row);
-      CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int i = 0; i < unknowns; ++i)
-        right_hand_side_[i] += weight * height * row[i];
+      add_heights(whitened_ ? Point(whitening_ * x) : x, weight * height);
     });
     solve_with(factor_);
     if (whitened_)
@@ -402,16 +399,21 @@ private:
   static constexpr Tables tables_{};
 
   // The fit from the inverse F = L^-1 of the Cholesky factor of the fit's own
-  // block (N = L L^T): F^T (F rhs), the coefficients of the monomials.
+  // block (N = L L^T): F^T (F rhs), the coefficients of the monomials (rhs: the
+  // sums of the heights times the monomials, scaled here, see add_heights).
   void solve_with(const double (&F)[packed])
   {
+    double scaled[unknowns];
+    CGAL_CURVATURE_ESTIMATION_UNROLL
+    for (int k = 0; k < unknowns; ++k)
+      scaled[k] = tables_.scale[k] * right_hand_side_[k];
     double reduced[unknowns];
     CGAL_CURVATURE_ESTIMATION_UNROLL
     for (int i = 0; i < unknowns; ++i) {
       double value = 0;
       CGAL_CURVATURE_ESTIMATION_UNROLL
       for (int k = 0; k <= i; ++k)
-        value += F[index(i, k)] * right_hand_side_[k];
+        value += F[index(i, k)] * scaled[k];
       reduced[i] = value;
     }
     double coefficients[unknowns];
@@ -505,26 +507,49 @@ private:
   void accumulate(const Point& x, double height, double weight)
   {
     double powers[D][2 * LastOrder + 1];
-    CGAL_CURVATURE_ESTIMATION_UNROLL
-    for (int d = 0; d < D; ++d) {
-      powers[d][0] = d == 0 ? weight : 1.0;
-      CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int k = 1; k <= 2 * LastOrder; ++k)
-        powers[d][k] = powers[d][k - 1] * x[d];
-    }
+    fill_powers(x, weight, powers);
     add_moments<first>(powers, std::make_index_sequence<Tables::moments() - first>());
-    double weighted_row[tested];
-    fill_row(powers, weighted_row, std::make_index_sequence<tested>());
+    double weighted_heights[LastOrder + 1];
     CGAL_CURVATURE_ESTIMATION_UNROLL
-    for (int i = 0; i < unknowns; ++i)
-      right_hand_side_[i] += height * weighted_row[i];
+    for (int k = 0; k <= LastOrder; ++k)
+      weighted_heights[k] = height * powers[0][k];
+    add_heights(weighted_heights, powers, std::make_index_sequence<unknowns>());
     ++size_;
   }
 
   template <int first, std::size_t... m>
   void add_moments(const double (&powers)[D][2 * LastOrder + 1], std::index_sequence<m...>)
   {
-    ((moments_[first + m] += product_of_powers(tables_.moment[first + m], powers)), ...);
+    ((moments_[first + m] += product_of_powers(tables_.moment[first + m], powers[0], powers)), ...);
+  }
+
+  // Adds to the right-hand side w h r(x) without the monomials' scales (solve_with
+  // applies them, once): `lead` is w h times the powers of x[0], `powers` those of
+  // the other coordinates.
+  template <int L, int P, std::size_t... i>
+  void add_heights(const double (&lead)[L], const double (&powers)[D][P], std::index_sequence<i...>)
+  {
+    ((right_hand_side_[i] += product_of_powers(tables_.row[i], lead, powers)), ...);
+  }
+
+  void add_heights(const Point& x, double weighted_height)
+  {
+    double powers[D][LastOrder + 1];
+    fill_powers(x, weighted_height, powers);
+    add_heights(powers[0], powers, std::make_index_sequence<unknowns>());
+  }
+
+  // powers[d][k] = x[d]^k, times `factor` for d = 0.
+  template <int P>
+  static void fill_powers(const Point& x, double factor, double (&powers)[D][P])
+  {
+    CGAL_CURVATURE_ESTIMATION_UNROLL
+    for (int d = 0; d < D; ++d) {
+      powers[d][0] = d == 0 ? factor : 1.0;
+      CGAL_CURVATURE_ESTIMATION_UNROLL
+      for (int k = 1; k < P; ++k)
+        powers[d][k] = powers[d][k - 1] * x[d];
+    }
   }
 
   // The leading n x n block of the normal matrix from the moments.
@@ -536,34 +561,16 @@ private:
       normal_matrix_[k] = tables_.entry_scale[k] * moments_[tables_.entry_moment[k]];
   }
 
-  template <int P>
-  static double product_of_powers(const Monomial_exponents& e, const double (&powers)[D][P])
+  // x^e, with the powers of x[0] from `lead` (which may carry a factor) and those
+  // of the other coordinates from `powers`.
+  template <int L, int P>
+  static double product_of_powers(const Monomial_exponents& e, const double (&lead)[L], const double (&powers)[D][P])
   {
-    double value = powers[0][e.power[0]];
+    double value = lead[e.power[0]];
     CGAL_CURVATURE_ESTIMATION_UNROLL
     for (int d = 1; d < D; ++d)
       value *= powers[d][e.power[d]];
     return value;
-  }
-
-  // The row of the monomials of x: the fit's own, then the other tested ones (see Monomial_tables).
-  static void monomials(const Point& x, double (&row)[tested])
-  {
-    double powers[D][LastOrder + 1];
-    CGAL_CURVATURE_ESTIMATION_UNROLL
-    for (int d = 0; d < D; ++d) {
-      powers[d][0] = 1;
-      CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int k = 1; k <= LastOrder; ++k)
-        powers[d][k] = powers[d][k - 1] * x[d];
-    }
-    fill_row(powers, row, std::make_index_sequence<tested>());
-  }
-
-  template <int P, std::size_t... i>
-  static void fill_row(const double (&powers)[D][P], double (&row)[tested], std::index_sequence<i...>)
-  {
-    ((row[i] = tables_.scale[i] * product_of_powers(tables_.row[i], powers)), ...);
   }
 
   // The largest column sum of absolute values of the leading n x n block of a packed symmetric matrix.
