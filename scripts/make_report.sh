@@ -4,7 +4,7 @@
 # builds the benchmarks (Release), runs the speed benchmarks (Google Benchmark,
 # JSON) and the accuracy runner (CSV), then writes the report with plots.
 #
-#   scripts/make_report.sh            full run (about 20-25 minutes on 2 cores):
+#   scripts/make_report.sh            full run (26 to 38 minutes on 2 cores):
 #                                     writes benchmark/REPORT.md and benchmark/figures/*.png
 #   scripts/make_report.sh --quick    smoke run (a few minutes, small meshes): writes
 #                                     BUILD/report_quick/REPORT.md, so that the committed
