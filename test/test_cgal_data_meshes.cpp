@@ -12,7 +12,8 @@
 // not_estimable over the archive, and at most 1% in each mesh of 1,000 vertices
 // or more. The test asserts them for the estimators that meet them
 // (meets_targets below: the paraboloid fit, whose documented fallback where no
-// ring determines its fit is the Gauss map; jet fitting and the curve network,
+// ring determines its fit is jet fitting's fit of degree 2 or else the Gauss map;
+// jet fitting and the curve network,
 // whose fallback is the paraboloid fit; the Gauss map) and prints the counts of
 // the others, which do not: Taubin and Chen-Schmitt (which refuse the creases of
 // CAD meshes made of long thin fans, pinion.off for instance). For every estimator
@@ -20,14 +21,14 @@
 //
 // It also prints, per mesh, how good the vertices are that the paraboloid fit
 // turns from refusals into estimates, by the whitened conditioning test
-// (internal/quadric_fit.h) or by Hamann's fit in the first-order normal's frame
-// where the quadric_fit normal is not determined (status fallback): the median
+// (internal/quadric_fit.h) or by its fallback (status fallback): the median
 // of |H - H_ref| over them against that of jet_fitting_curvatures (defaults) over
 // the same vertices, with H_ref from jet fitting of degree 4 on 3 rings where
-// that gives a value. The target of 1.5 is not met on the CAD meshes with sharp
-// creases (b9_mesh.off, boeing.off, couplingdown.off, ...), where the paraboloid
-// fit is already further from H_ref than jet fitting at the vertices it
-// estimated before: printed, not asserted.
+// that gives a value. The target of 1.5 is not met on 3 meshes, by the whitened
+// test's fits at boundary vertices of b9_mesh.off and elephant-with-holes.off and
+// at 3 vertices of u.off: printed, not asserted. It asserts that over the
+// fallback's vertices the median is below the Gauss map's, the former fallback
+// (1.88 against 2.89 over 743 vertices).
 //
 // Release builds only (16 s in one, sequential); skipped with a message where
 // the archive is absent.
@@ -232,6 +233,9 @@ TEST(CGAL_data_meshes, EveryEstimatorWithItsDefaults)
   std::size_t files = 0, vertices_read = 0, counted_total = 0, newly_accepted = 0;
   std::vector<std::string> ratio_lines;
   std::size_t ratio_meshes = 0, ratio_over = 0;
+  // Over the paraboloid fit's fallback vertices where H_ref exists: its errors
+  // and the Gauss map's (index 3, its former fallback) at the same vertices.
+  std::vector<double> fallback_errors, gauss_map_errors;
   for (const fs::path& path : surface_mesh_files(directory)) {
     Mesh mesh;
     if (!read_mesh(path, mesh))
@@ -259,6 +263,7 @@ TEST(CGAL_data_meshes, EveryEstimatorWithItsDefaults)
     // The paraboloid fit's newly accepted vertices, against jet fitting (index 2).
     const Estimates& ours = runs[0];
     const Estimates& jet = runs[2];
+    const Estimates& gauss_map = runs[3];
     const std::vector<char> before = refused_before(mesh);
     std::vector<double> our_errors, jet_errors;
     const auto vpm = get(CGAL::vertex_point, mesh);
@@ -274,6 +279,10 @@ TEST(CGAL_data_meshes, EveryEstimatorWithItsDefaults)
         continue;
       our_errors.push_back(std::abs(ours.mean[i] - h_ref));
       jet_errors.push_back(std::abs(jet.mean[i] - h_ref));
+      if (ours.status[i] == Status::fallback && !std::isnan(gauss_map.mean[i])) {
+        fallback_errors.push_back(our_errors.back());
+        gauss_map_errors.push_back(std::abs(gauss_map.mean[i] - h_ref));
+      }
     }
     if (!our_errors.empty()) {
       const double ratio = median(our_errors) / median(jet_errors);
@@ -314,6 +323,11 @@ TEST(CGAL_data_meshes, EveryEstimatorWithItsDefaults)
               newly_accepted, ratio_over, ratio_meshes, median_ratio_target);
   for (const std::string& line : ratio_lines)
     std::printf("%s\n", line.c_str());
+
+  ASSERT_FALSE(fallback_errors.empty());
+  std::printf("paraboloid_fitting's fallback at %zu vertices: median |H - H_ref| %.3g, the Gauss map's %.3g\n",
+              fallback_errors.size(), median(fallback_errors), median(gauss_map_errors));
+  EXPECT_LT(median(fallback_errors), median(gauss_map_errors));
 }
 
 }  // namespace

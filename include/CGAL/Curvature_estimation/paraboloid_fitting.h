@@ -27,17 +27,19 @@ namespace internal {
 // Hamann's fit at one vertex, with the given normal or one estimated by `method`.
 // With the quadric_fit normal, where no ring determines the fit (nearly always
 // because the normal's fit is not determined: samples near a conic through the
-// vertex, as on the creases of CAD meshes triangulated by long thin fans), the
-// Gauss map's least-squares estimate (gauss_map_curvatures() with the same
-// settings), status fallback: it differentiates normals, first-order data, which
-// such stencils determine where the heights' second-order terms are not. Not
-// where the neighborhood, on every ring reached, has fewer neighbors than
-// Hamann's fit has unknowns (a lone triangle): no paraboloid is determined even
-// through them, which tells nothing of the curvature, and the vertex stays
-// not_estimable. The
-// Gauss map's normals are computed on demand: the fallback is rare (0.3% of the
-// vertices of CGAL's data meshes), and a table of all normals would cost a
-// second fit per vertex everywhere.
+// vertex, as on the creases of CAD meshes triangulated by long thin fans), status
+// fallback: jet fitting's fit (Platelet_fit_core::fit_in_plane_frame), which does
+// not pass through the vertex, and where that is not determined either, the Gauss
+// map's least-squares estimate
+// (gauss_map_curvatures() with the same settings): it differentiates normals,
+// first-order data, which such stencils determine where the heights'
+// second-order terms are not. Not where the neighborhood, on every ring reached,
+// has fewer neighbors than Hamann's fit has unknowns (a lone triangle): no
+// paraboloid is determined even through them, which tells nothing of the
+// curvature, and the vertex stays not_estimable. The Gauss map's normals are
+// computed on demand: the fallback is rare (0.3% of the vertices of CGAL's data
+// meshes), and a table of all normals would cost a second fit per vertex
+// everywhere.
 template <typename FaceGraph, typename VertexPointMap>
 class Paraboloid_estimator
 {
@@ -56,6 +58,9 @@ public:
     if (result.status != Estimation_status::not_estimable || method_ != Vertex_normal_method::quadric_fit ||
         fitter_.neighbors() < std::size_t(Taylor_fit<2, 2, 2>::unknowns))
       return result;
+    const Surface_estimate in_plane_frame = fitter_.fit_in_plane_frame(v);
+    if (in_plane_frame.status != Estimation_status::not_estimable)
+      return in_plane_frame;
     return as_fallback(gauss_map_.estimate(v, nullptr));
   }
 
@@ -109,13 +114,22 @@ private:
 /// is, in Hamann's fit (the paper's method with approximated normals).
 ///
 /// **Fallback.** With the `quadric_fit` normal and no `vertex_normal_map`, a vertex
-/// where no ring up to `max_neighborhood_rings` determines the fit gets the estimate
-/// of `gauss_map_curvatures()` with the same parameters, with the status `fallback`.
+/// where no ring up to `max_neighborhood_rings` determines the fit gets, with the
+/// status `fallback`, the estimate of jet fitting's fit of degree 2 (as
+/// `jet_fitting_curvatures()` fits it: a quadratic polynomial with constant and
+/// linear terms over the vertex and its rings, in the frame of their least-squares
+/// plane), from the starting rings, widened until its condition number is at most
+/// 1000 times `max_condition_number`; where no ring gives that either, the estimate of
+/// `gauss_map_curvatures()` with the same parameters.
 /// This happens where the samples lie near a conic through the vertex, so that the
 /// normal's quadratic fit (five unknowns) is not determined: the two rows of a single
 /// band of triangles, or the creases of CAD meshes triangulated by fans of long thin
-/// triangles, whose near and far ends are two clusters. The Gauss map differentiates
-/// the vertex normals, first-order data that such stencils do determine. A vertex
+/// triangles, whose near and far ends are two clusters. A fit that does not pass
+/// through the vertex is determined there more often; the Gauss map differentiates
+/// the vertex normals, first-order data that such stencils do determine. Over CGAL's
+/// data meshes, at the 743 vertices where Hamann's fit is not determined, the median
+/// distance to jet fitting of degree 4 on 3 rings is 1.88 for the jet fit, 2.89 for
+/// the Gauss map. A vertex
 /// with fewer than three neighbors on all those rings together (a lone triangle) is
 /// not estimable: not even Hamann's three coefficients are determined. Over the
 /// surface meshes of CGAL's data (414,841 vertices) the fit alone refuses 2,709;
