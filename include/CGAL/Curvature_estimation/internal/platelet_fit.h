@@ -145,17 +145,18 @@ public:
   }
 
   // The fit of jet fitting (degree 2) for the vertices where fit(v, quadric_fit)
-  // finds none: the quadratic Taylor polynomial with a constant term and linear
-  // terms, unweighted, over the vertex and its rings in the frame of their
-  // least-squares plane (oriented as the first-order normal), from the starting
-  // rings, widened while test (a) refuses it at plane_fit_condition_factor times
-  // max_condition (no test (b), as in jet fitting: with it, the median distance
-  // below over these vertices is the same, 1.34 times jet fitting's on hand.off
-  // instead of 1.00, 0.98 on anchor.off instead of 1.05, and within 1% on the
-  // other meshes); the curvatures are those of the fitted graph. Status
-  // fallback; not_estimable where no ring gives one. Over the vertices of CGAL's
-  // data meshes that need it (743), its median distance to jet fitting of degree 4
-  // is 1.88, the Gauss map's 2.89 (test_cgal_data_meshes).
+  // finds none, or whitened_at_border() (see Paraboloid_estimator): the quadratic
+  // Taylor polynomial with a constant term and linear terms, unweighted, over the
+  // vertex and its rings in the frame of their least-squares plane (oriented as
+  // the first-order normal), from the starting rings, widened while test (a)
+  // refuses it at plane_fit_condition_factor times max_condition (no test (b), as
+  // in jet fitting: with it, the median distance below over these vertices is the
+  // same, 1.34 times jet fitting's on hand.off instead of 1.00, 0.98 on anchor.off
+  // instead of 1.05, and within 1% on the other meshes); the curvatures are those
+  // of the fitted graph. Status fallback; not_estimable where no ring gives one.
+  // Over the vertices of CGAL's data meshes where fit(v, quadric_fit) finds none
+  // (743), its median distance to jet fitting of degree 4 is 1.88, the Gauss
+  // map's 2.89 (test_cgal_data_meshes).
   Estimate fit_in_plane_frame(Vertex v)
   {
     Vector normal;
@@ -190,6 +191,10 @@ public:
   {
     return in_ball() ? ball_neighbors_ : offsets_.empty() ? 0 : offsets_.size() - 1;
   }
+
+  // Whether the last fit(v, method) of fit_degree 2 over rings was Hamann's fit at
+  // a boundary vertex that only test (b) accepted, for its normal or for itself.
+  bool whitened_at_border() const { return settings_.degree == 2 && !in_ball() && on_border_ && whitened_; }
 
   // The unit normal by `method`; false where there is none. With quadric_fit and
   // a fit degree of 3 or 4, the first-order normal corrected by the gradient of
@@ -272,6 +277,7 @@ private:
       finite_.push_back(all_finite(offset));
     }
     on_border_ = neighborhood_.center_on_border(v);
+    whitened_ = false;
     curvature_rings_ = 0;
     ball_neighbors_ = 0;
     return true;
@@ -389,7 +395,9 @@ private:
     for (; rings <= max_rings && reach(rings); ++rings)
       widest = rings;
     const auto samples = [&](const auto& add) { for_each_sample<Fit>(normal, tangents, widest, add); };
-    return widest != 0 && fit.solve_whitened(max_condition, samples) ? widest : 0;
+    const bool accepted = widest != 0 && fit.solve_whitened(max_condition, samples);
+    whitened_ = whitened_ || accepted;
+    return accepted ? widest : 0;
   }
 
   // The neighborhood's first-order normal, or for quadric_fit a normal of second
@@ -652,6 +660,7 @@ private:
   double scale_ = 1;
   double inverse_scale_ = 1;     // 1 / scale_, or 0 where that is not a normal number
   bool on_border_ = false;
+  bool whitened_ = false;  // whether test (b) accepted a fit since gather(v)
   // Where the normal fit needed test (b), the curvature fit starts on the rings
   // that gave the normal (the widest; the narrower ones failed test (a) for the
   // normal). 0: it starts on the settings' rings.
