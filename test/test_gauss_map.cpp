@@ -86,13 +86,6 @@ Errors errors(const Estimates& e, const std::vector<ce_test::Exact_curvature>& e
   return ce_test::curvature_errors(e, exact);
 }
 
-double median(std::vector<double> values)
-{
-  const std::size_t mid = values.size() / 2;
-  std::nth_element(values.begin(), values.begin() + mid, values.end());
-  return values[mid];
-}
-
 void expect_unit_orthogonal_tangent(const Curvatures& c, const Eigen::Vector3d& normal, double tangent_tolerance)
 {
   const Eigen::Vector3d d_max(c.max_direction.x(), c.max_direction.y(), c.max_direction.z());
@@ -500,7 +493,7 @@ TEST(Gauss_map, RandomPolynomialFansReproduceTheReferenceMedians)
   std::printf("Random polynomial fans, %d surfaces x %d fans (%.1f s): median Err(K), Err(H); ours vs reference\n",
               surfaces, fans_per_surface, seconds);
   for (int setting = 0; setting < settings; ++setting) {
-    const double k = median(err_K[setting]), h = median(err_H[setting]);
+    const double k = ce_test::median(err_K[setting]), h = ce_test::median(err_H[setting]);
     if (reference[setting].err_K > 0)
       std::printf("  %-36s K %.3f (ref %.3f, %+5.1f%%)  H %.3f (ref %.3f, %+5.1f%%)\n", reference[setting].name, k,
                   reference[setting].err_K, 100 * (k / reference[setting].err_K - 1), h, reference[setting].err_H,

@@ -418,25 +418,6 @@ TEST(Paraboloid_fitting, WhereNoRingDeterminesTheFitTheDefaultFallsBackToJetFitt
     EXPECT_NE(paper.status[i], Estimation_status::fallback) << i;
 }
 
-// The graph of g over an n x n grid of [-1, 1] x [-aspect, aspect], triangulated as
-// grid_graph_soup: triangles `1 / aspect` times longer than high.
-ce_test::Soup anisotropic_grid_soup(const ce_test::Graph_function& g, std::size_t n, double aspect)
-{
-  ce_test::Soup soup;
-  for (std::size_t j = 0; j < n; ++j)
-    for (std::size_t i = 0; i < n; ++i) {
-      const double x = ce_test::internal::grid_coordinate(i, n, -1, 1);
-      const double y = aspect * ce_test::internal::grid_coordinate(j, n, -1, 1);
-      soup.points.emplace_back(x, y, g.f(x, y));
-      soup.params.emplace_back(x, y);
-    }
-  for (std::size_t j = 0; j + 1 < n; ++j)
-    for (std::size_t i = 0; i + 1 < n; ++i)
-      ce_test::internal::add_grid_quads(soup.faces, i + n * j, i + 1 + n * j, i + 1 + n * (j + 1), i + n * (j + 1),
-                                        ce_test::Diagonal::anti);
-  return soup;
-}
-
 // At the boundary vertices of grids of thin triangles (aspect ratios 10:3 and 5:1),
 // only the whitened test accepts Hamann's fit or its normal's. Hamann's fit has no
 // linear terms, and the tilt of the normal that the one-sided stencil leaves
@@ -452,7 +433,7 @@ TEST(Paraboloid_fitting, AtBoundaryVerticesThatOnlyTheWhitenedTestAcceptsTheDefa
       if (g.name == "plane")
         continue;
       SCOPED_TRACE(g.name + ", aspect " + std::to_string(aspect));
-      const ce_test::Soup soup = anisotropic_grid_soup(g, 21, aspect);
+      const ce_test::Soup soup = ce_test::rectangle_grid_graph_soup(g, 21, -1, 1, -aspect, aspect);
       const Mesh mesh = ce_test::to_mesh<Mesh>(soup);
       const auto exact = ce_test::graph_curvatures(g, soup);
       const Estimates ours = estimate(mesh);
@@ -470,13 +451,9 @@ TEST(Paraboloid_fitting, AtBoundaryVerticesThatOnlyTheWhitenedTestAcceptsTheDefa
         ++i;
       }
       ASSERT_GE(our_errors.size(), 7u);
-      const auto median = [](std::vector<double> e) {
-        std::nth_element(e.begin(), e.begin() + e.size() / 2, e.end());
-        return e[e.size() / 2];
-      };
       std::printf("%-14s aspect %.1f: %2zu vertices, median H error %.3g, Hamann's fit's %.3g\n", g.name.c_str(),
-                  aspect, our_errors.size(), median(our_errors), median(hamann_errors));
-      EXPECT_LT(median(our_errors), median(hamann_errors));
+                  aspect, our_errors.size(), ce_test::median(our_errors), ce_test::median(hamann_errors));
+      EXPECT_LT(ce_test::median(our_errors), ce_test::median(hamann_errors));
     }
 }
 

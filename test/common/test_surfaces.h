@@ -386,20 +386,21 @@ inline void check_grid_args(std::size_t n, double lo, double hi)
 
 } // namespace internal
 
-/// Graph of g.f over an n x n grid on [lo,hi]^2: x_i = lo + i (hi-lo)/(n-1) (x_{n-1} = hi exactly),
-/// same for y_j; point (x_i, y_j, f(x_i, y_j)) has index i + n*j (x varies fastest); params = (x, y).
-/// Each quad ((i,j),(i+1,j),(i+1,j+1),(i,j+1)) gives two counter-clockwise triangles (seen from +z),
-/// split along `d`. n^2 points, 2(n-1)^2 faces. Hamann's set-up is n = 51, lo = -1, hi = 1.
-inline Soup grid_graph_soup(const Graph_function& g, std::size_t n, double lo = -1.0, double hi = 1.0,
-                            Diagonal d = Diagonal::anti)
+/// Graph of g.f over an n x n grid on [x_lo,x_hi] x [y_lo,y_hi]: x_i = x_lo + i (x_hi-x_lo)/(n-1)
+/// (x_{n-1} = x_hi exactly), the same for y_j; point (x_i, y_j, f(x_i, y_j)) has index i + n*j
+/// (x varies fastest); params = (x, y). Each quad ((i,j),(i+1,j),(i+1,j+1),(i,j+1)) gives two
+/// counter-clockwise triangles (seen from +z), split along `d`. n^2 points, 2(n-1)^2 faces.
+inline Soup rectangle_grid_graph_soup(const Graph_function& g, std::size_t n, double x_lo, double x_hi, double y_lo,
+                                      double y_hi, Diagonal d = Diagonal::anti)
 {
-  internal::check_grid_args(n, lo, hi);
+  internal::check_grid_args(n, x_lo, x_hi);
+  internal::check_grid_args(n, y_lo, y_hi);
   Soup s;
   s.points.reserve(n * n);
   s.params.reserve(n * n);
   for (std::size_t j = 0; j < n; ++j)
     for (std::size_t i = 0; i < n; ++i) {
-      const double x = internal::grid_coordinate(i, n, lo, hi), y = internal::grid_coordinate(j, n, lo, hi);
+      const double x = internal::grid_coordinate(i, n, x_lo, x_hi), y = internal::grid_coordinate(j, n, y_lo, y_hi);
       s.points.emplace_back(x, y, g.f(x, y));
       s.params.emplace_back(x, y);
     }
@@ -408,6 +409,13 @@ inline Soup grid_graph_soup(const Graph_function& g, std::size_t n, double lo = 
     for (std::size_t i = 0; i + 1 < n; ++i)
       internal::add_grid_quads(s.faces, i + n * j, i + 1 + n * j, i + 1 + n * (j + 1), i + n * (j + 1), d);
   return s;
+}
+
+/// rectangle_grid_graph_soup on the square [lo,hi]^2. Hamann's set-up is n = 51, lo = -1, hi = 1.
+inline Soup grid_graph_soup(const Graph_function& g, std::size_t n, double lo = -1.0, double hi = 1.0,
+                            Diagonal d = Diagonal::anti)
+{
+  return rectangle_grid_graph_soup(g, n, lo, hi, lo, hi, d);
 }
 
 /// The grid of `grid_graph_soup` (same indexing, anti diagonals) with its (x,y) positions
@@ -860,6 +868,14 @@ private:
   std::size_t count_ = 0;
   bool non_finite_ = false;
 };
+
+/// The median of `values` (the upper of the two middle ones for an even count).
+inline double median(std::vector<double> values)
+{
+  const std::size_t mid = values.size() / 2;
+  std::nth_element(values.begin(), values.begin() + mid, values.end());
+  return values[mid];
+}
 
 /// Observed convergence order p from errors e ~ C h^p at two mesh sizes:
 /// p = log(e_coarse/e_fine) / log(h_coarse/h_fine).
