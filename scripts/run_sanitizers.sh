@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
 # AddressSanitizer + UndefinedBehaviorSanitizer build of the tool and of the tests
-# that exercise bad input (test_tool runs the sanitized tool on every bad and
+# that exercise bad input or the tool's own mesh building (test_tool runs the sanitized tool on every bad and
 # degenerate input), then CTest on them. Any sanitizer report fails the run.
 # env: SAN_BUILD_DIR (default ./build-sanitize), JOBS (default nproc), CXX.
 set -euo pipefail
@@ -10,7 +10,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
 BUILD_DIR="${SAN_BUILD_DIR:-build-sanitize}"
 JOBS="${JOBS:-$(nproc 2>/dev/null || echo 2)}"
-TARGETS=(curvature test_tool test_paraboloid_fitting)
+TARGETS=(curvature test_tool test_tool_mesh test_paraboloid_fitting)
 
 bash scripts/install_dependencies.sh
 FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
@@ -24,4 +24,4 @@ cmake --build "$BUILD_DIR" -j "$JOBS" --target "${TARGETS[@]}"
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:strict_string_checks=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS" \
-  -R '^(test_tool|test_paraboloid_fitting)\.|^tool_'
+  -R '^(test_tool|test_tool_mesh|test_paraboloid_fitting)\.|^tool_'

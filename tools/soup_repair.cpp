@@ -8,7 +8,9 @@
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <numeric>
 #include <string>
@@ -103,18 +105,21 @@ bool is_same_polygon(const Polygon& f, const Polygon& g, std::size_t v, int dire
 }
 
 // The halfedges of simple polygons on `points` points, grouped by source vertex,
-// each group sorted by target.
+// each group sorted by target. 32-bit indices (half the memory, and the mesh's
+// own indices are 32-bit).
 class Halfedges_by_source
 {
 public:
   struct Halfedge
   {
-    std::size_t target, face;
+    std::uint32_t target, face;
   };
 
   template <typename Polygon_range>
   Halfedges_by_source(std::size_t points, const Polygon_range& polygons) : start_(points + 1, 0)
   {
+    if (points > std::numeric_limits<std::uint32_t>::max() || polygons.size() > std::numeric_limits<std::uint32_t>::max())
+      fail("the mesh has more vertices or faces than CGAL::Surface_mesh can index");
     for (std::size_t f = 0; f < polygons.size(); ++f)
       for (std::size_t index : polygons[f])
         ++start_[index + 1];
@@ -124,7 +129,7 @@ public:
     for (std::size_t f = 0; f < polygons.size(); ++f) {
       const auto& polygon = polygons[f];
       for (std::size_t k = 0; k < polygon.size(); ++k)
-        halfedges_[next[polygon[k]]++] = {polygon[(k + 1) % polygon.size()], f};
+        halfedges_[next[polygon[k]]++] = {std::uint32_t(polygon[(k + 1) % polygon.size()]), std::uint32_t(f)};
     }
     for (std::size_t v = 0; v < points; ++v)
       std::sort(halfedges_.begin() + std::ptrdiff_t(start_[v]), halfedges_.begin() + std::ptrdiff_t(start_[v + 1]),
@@ -139,7 +144,7 @@ public:
   // The halfedges from `source` to `target`.
   std::pair<const Halfedge*, const Halfedge*> between(std::size_t source, std::size_t target) const
   {
-    return std::equal_range(begin(source), end(source), Halfedge{target, 0},
+    return std::equal_range(begin(source), end(source), Halfedge{std::uint32_t(target), 0},
                             [](const Halfedge& a, const Halfedge& b) { return a.target < b.target; });
   }
 
@@ -162,7 +167,6 @@ struct Topology
   bool one_fan_per_vertex = true;     // (if the above) the polygons around each vertex are one fan
   bool isolated_points = false;       // a point in no polygon
   bool duplicate_polygons = false;    // a polygon twice, in either orientation
-  std::size_t edges = 0;              // the mesh's edges, if a mesh
 
   bool polygon_mesh() const { return directed_edges_unique && one_fan_per_vertex; }
 };
@@ -171,7 +175,6 @@ template <typename Polygon_range>
 Topology topology(const Halfedges_by_source& halfedges, const Polygon_range& polygons)
 {
   Topology t;
-  std::size_t boundary = 0;
   for (std::size_t v = 0; v < halfedges.points(); ++v) {
     if (halfedges.begin(v) == halfedges.end(v)) {
       t.isolated_points = true;
@@ -203,8 +206,6 @@ Topology topology(const Halfedges_by_source& halfedges, const Polygon_range& pol
     std::size_t fan_starts = 0;
     const Halfedges_by_source::Halfedge* start = halfedges.begin(v);
     for (auto h = halfedges.begin(v); h != halfedges.end(v); ++h) {
-      if (!halfedges.find(h->target, v))
-        ++boundary;
       if (!halfedges.find(v, neighbor_in(polygons[h->face], v, -1))) {
         ++fan_starts;  // the polygon before h around v is missing: a fan starts at h
         start = h;
@@ -223,7 +224,6 @@ Topology topology(const Halfedges_by_source& halfedges, const Polygon_range& pol
     if (fan_starts > 1 || visited != std::size_t(halfedges.end(v) - halfedges.begin(v)))
       t.one_fan_per_vertex = false;
   }
-  t.edges = (halfedges.size() + boundary) / 2;
   return t;
 }
 
@@ -276,22 +276,86 @@ bool orient_as_cgal(const Halfedges_by_source& halfedges, Polygons& polygons, st
   return true;
 }
 
-// The mesh of a soup that is a polygon mesh, as CGAL's polygon_soup_to_polygon_mesh
-// makes it (a vertex per point in order, then the faces in order by Euler::add_face):
-// mesh index = soup index.
+// The mesh of a soup that is a polygon mesh (as topology() finds it), with the
+// connectivity that CGAL's polygon_soup_to_polygon_mesh gives it (a vertex per
+// point in order, then the faces in order by Euler::add_face), set directly:
+// add_face searches and relinks halfedges face by face, about 190 ns a triangle
+// on a 1M-vertex grid. What add_face leaves, for such a soup:
+// - an edge per pair of opposite halfedges, numbered in the order in which the
+//   faces first meet it; its first halfedge is the one that face has;
+// - halfedge(f): the halfedge of f into its first vertex;
+// - halfedge(v): the border halfedge into v if v is on a border, else the halfedge
+//   into v of the last face around v (add_face points v at its border halfedge
+//   into v after each face around v; the last face makes that halfedge inner).
+// Mesh index = soup index. The halfedges are looked up once, per corner of the
+// polygons (corner c: the halfedge from its vertex to the next of its polygon).
 template <typename Polygon_range>
-Mesh polygon_mesh(const std::vector<Point>& points, const Polygon_range& polygons, std::size_t edges)
+Mesh polygon_mesh(const std::vector<Point>& points, const Polygon_range& polygons,
+                  std::optional<Halfedges_by_source>& halfedges)
 {
-  Mesh mesh;
-  mesh.reserve(Mesh::size_type(points.size()), Mesh::size_type(edges), Mesh::size_type(polygons.size()));
-  for (const Point& p : points)
-    mesh.add_vertex(p);
-  std::vector<V> face;
+  using H = Mesh::Halfedge_index;
+  // 32-bit corner numbers, as the mesh's halfedge indices are.
+  using Corner = Mesh::size_type;
+  const Corner none = std::numeric_limits<Corner>::max();
+  std::vector<Corner> first_corner(polygons.size() + 1, 0);
   for (std::size_t f = 0; f < polygons.size(); ++f) {
-    face.clear();
-    for (std::size_t index : polygons[f])
-      face.push_back(V(Mesh::size_type(index)));
-    CGAL::Euler::add_face(face, mesh);
+    if (polygons[f].size() >= std::size_t(none / 2 - first_corner[f]))
+      fail("the mesh has more halfedges than CGAL::Surface_mesh can index");
+    first_corner[f + 1] = first_corner[f] + Corner(polygons[f].size());
+  }
+  // The opposite corner of each corner, or `none` on a border; then (below) the
+  // corner's mesh halfedge in its place. An edge is new where its first corner is.
+  std::vector<Corner> corner(first_corner.back());
+  Corner edges = 0;
+  for (std::size_t f = 0; f < polygons.size(); ++f) {
+    const auto& polygon = polygons[f];
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+      const std::size_t u = polygon[k], w = polygon[(k + 1) % polygon.size()];
+      const Corner c = first_corner[f] + Corner(k);
+      const Halfedges_by_source::Halfedge* opposite = halfedges->find(w, u);
+      corner[c] = opposite ? first_corner[opposite->face] + Corner(position(polygons[opposite->face], w)) : none;
+      edges += corner[c] == none || corner[c] > c;
+    }
+  }
+  halfedges.reset();
+
+  // Every element at once (add_edge and add_face grow every property array by one).
+  Mesh mesh;
+  mesh.resize(Mesh::size_type(points.size()), edges, Mesh::size_type(polygons.size()));
+  for (std::size_t v = 0; v < points.size(); ++v)
+    mesh.point(V(Mesh::size_type(v))) = points[v];
+  std::vector<H> border_out(points.size()), border_in(points.size());
+  Corner next_edge = 0;
+  for (std::size_t f = 0; f < polygons.size(); ++f) {
+    const auto& polygon = polygons[f];
+    const Mesh::Face_index face{Mesh::size_type(f)};
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+      const Corner c = first_corner[f] + Corner(k), opposite = corner[c];
+      const V u(Mesh::size_type(polygon[k])), w(Mesh::size_type(polygon[(k + 1) % polygon.size()]));
+      H h;
+      if (opposite != none && opposite < c) {
+        h = mesh.opposite(H(corner[opposite]));
+      } else {
+        h = H(2 * next_edge++);
+        mesh.set_target(h, w);
+        mesh.set_target(mesh.opposite(h), u);
+        if (opposite == none)
+          border_out[std::size_t(w)] = border_in[std::size_t(u)] = mesh.opposite(h);
+      }
+      corner[c] = Corner(h);
+      mesh.set_face(h, face);
+      mesh.set_halfedge(w, h);
+    }
+    for (std::size_t k = 0; k < polygon.size(); ++k)
+      mesh.set_next(H(corner[first_corner[f] + k]), H(corner[first_corner[f] + (k + 1) % polygon.size()]));
+    mesh.set_halfedge(face, H(corner[first_corner[f + 1] - 1]));
+  }
+  for (std::size_t v = 0; v < points.size(); ++v) {
+    const H border = border_in[v];
+    if (border != H()) {
+      mesh.set_next(border, border_out[std::size_t(mesh.target(border))]);
+      mesh.set_halfedge(V(Mesh::size_type(v)), border);
+    }
   }
   return mesh;
 }
@@ -402,7 +466,6 @@ Mesh repaired_mesh(const Soup& soup, std::vector<V>& file_to_mesh)
       analyse();
     }
   }
-  halfedges.reset();
   if (reoriented > 0)
     notes.push_back("re-oriented " + std::to_string(reoriented) + " faces");
   if (points.size() > distinct_used)
@@ -426,7 +489,7 @@ Mesh repaired_mesh(const Soup& soup, std::vector<V>& file_to_mesh)
   if (!polygons.empty()) {
     if (!t.polygon_mesh())
       fail("the faces cannot be made into a polygon mesh, even after repair");
-    mesh = polygon_mesh(points, polygons, t.edges);
+    mesh = polygon_mesh(points, polygons, halfedges);
   }
 
   if (!notes.empty()) {
@@ -449,12 +512,13 @@ Mesh build_mesh(const Soup& soup, std::vector<V>& file_to_mesh)
   if (all_simple(soup.faces)) {
     first_at_same_place(soup.points, distinct);
     if (distinct == soup.points.size()) {
-      const Topology t = topology(Halfedges_by_source(soup.points.size(), soup.faces), soup.faces);
+      std::optional<Halfedges_by_source> halfedges(std::in_place, soup.points.size(), soup.faces);
+      const Topology t = topology(*halfedges, soup.faces);
       if (t.polygon_mesh() && !t.isolated_points && !t.duplicate_polygons) {
         file_to_mesh.resize(soup.points.size());
         for (std::size_t i = 0; i < file_to_mesh.size(); ++i)
           file_to_mesh[i] = V(Mesh::size_type(i));
-        return polygon_mesh(soup.points, soup.faces, t.edges);
+        return polygon_mesh(soup.points, soup.faces, halfedges);
       }
     }
   }
