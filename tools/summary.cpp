@@ -17,9 +17,11 @@ void print_range(const char* name, std::vector<double> values)
     std::cout << name << ": no estimate\n";
     return;
   }
-  std::sort(values.begin(), values.end());
-  std::cout << name << ": min " << values.front() << ", median " << values[values.size() / 2]
-            << ", max " << values.back() << '\n';
+  // The median by selection, not a sort (a sort of 1M values took 5% of the tool's time).
+  const auto median = values.begin() + std::ptrdiff_t(values.size() / 2);
+  std::nth_element(values.begin(), median, values.end());
+  const auto [min, max] = std::minmax_element(values.begin(), values.end());
+  std::cout << name << ": min " << *min << ", median " << *median << ", max " << *max << '\n';
 }
 
 // --radius: the radius, and the mean number of vertices in a ball.
