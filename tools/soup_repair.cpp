@@ -141,11 +141,21 @@ public:
   const Halfedge* begin(std::size_t v) const { return halfedges_.data() + start_[v]; }
   const Halfedge* end(std::size_t v) const { return halfedges_.data() + start_[v + 1]; }
 
-  // The halfedges from `source` to `target`.
+  // The halfedges from `source` to `target`: by a linear scan where a vertex has
+  // few (as most have), where it beats a binary search's mispredicted branches.
   std::pair<const Halfedge*, const Halfedge*> between(std::size_t source, std::size_t target) const
   {
-    return std::equal_range(begin(source), end(source), Halfedge{std::uint32_t(target), 0},
-                            [](const Halfedge& a, const Halfedge& b) { return a.target < b.target; });
+    const Halfedge* first = begin(source);
+    const Halfedge* const last = end(source);
+    if (last - first > 16)
+      return std::equal_range(first, last, Halfedge{std::uint32_t(target), 0},
+                              [](const Halfedge& a, const Halfedge& b) { return a.target < b.target; });
+    while (first != last && first->target < target)
+      ++first;
+    const Halfedge* past = first;
+    while (past != last && past->target == target)
+      ++past;
+    return {first, past};
   }
 
   // The first halfedge from `source` to `target`, or null.
