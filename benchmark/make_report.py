@@ -843,9 +843,12 @@ def end_to_end_section(path):
     out = ["## The tool end to end", ""]
     out += ["`benchmark/tool_end_to_end.sh`: `curvature --threads 1 FILE.off` (summary) and with `-o FILE.csv` on a "
             "generated ASCII OFF (%s), clean and with one face flipped (which takes the soup repair). Wall time "
-            "and peak resident memory per vertex (`/usr/bin/time -v`). Targets (issue 16) for the clean file with the "
+            "(the least of three runs) and peak resident memory per vertex (`/usr/bin/time -v`). Targets (issue 16) for the clean file with the "
             "CSV at 1M vertices: at most 2 s and 400 bytes per vertex." % lines[0], ""]
     out += [table(["file", "output", "wall s", "peak bytes/vertex"], rows), ""]
+    dates = [l.split(None, 1)[1] for l in lines if l.startswith("date: ")]
+    if dates:
+        out += ["Run on %s." % dates[0], ""]
     return out
 
 
