@@ -118,12 +118,12 @@ TEST(ToolMesh, ClosedSurfacesShuffled)
 // borders meet at a vertex), and a second component with a pentagon.
 TEST(ToolMesh, MixedPolygonsHolesAndComponents)
 {
-  const std::size_t n = 9;
+  constexpr std::size_t n = 9;
   std::vector<ce_tool::Point> points;
   for (std::size_t j = 0; j < n; ++j)
     for (std::size_t i = 0; i < n; ++i)
       points.emplace_back(double(i), double(j), 0.1 * double(i * j % 5));
-  const auto at = [n](std::size_t i, std::size_t j) { return j * n + i; };
+  const auto at = [](std::size_t i, std::size_t j) { return j * n + i; };
   Polygons polygons;
   for (std::size_t j = 0; j + 1 < n; ++j) {
     for (std::size_t i = 0; i + 1 < n; ++i) {

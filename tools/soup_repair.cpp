@@ -3,7 +3,6 @@
 
 #include "tool_error.h"
 
-#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 
@@ -298,7 +297,8 @@ bool orient_as_cgal(const Halfedges_by_source& halfedges, Polygons& polygons, st
 //   into v of the last face around v (add_face points v at its border halfedge
 //   into v after each face around v; the last face makes that halfedge inner).
 // Mesh index = soup index. The halfedges are looked up once, per corner of the
-// polygons (corner c: the halfedge from its vertex to the next of its polygon).
+// polygons (corner c: the halfedge from its vertex to the next of its polygon),
+// and `halfedges` (those of `polygons`) is freed before the mesh takes its memory.
 template <typename Polygon_range>
 Mesh polygon_mesh(const std::vector<Point>& points, const Polygon_range& polygons,
                   std::optional<Halfedges_by_source>& halfedges)
@@ -341,7 +341,7 @@ Mesh polygon_mesh(const std::vector<Point>& points, const Polygon_range& polygon
     const Mesh::Face_index face{Mesh::size_type(f)};
     for (std::size_t k = 0; k < polygon.size(); ++k) {
       const Corner c = first_corner[f] + Corner(k), opposite = corner[c];
-      const V u(Mesh::size_type(polygon[k])), w(Mesh::size_type(polygon[(k + 1) % polygon.size()]));
+      const V u{Mesh::size_type(polygon[k])}, w{Mesh::size_type(polygon[(k + 1) % polygon.size()])};
       H h;
       if (opposite != none && opposite < c) {
         h = mesh.opposite(H(corner[opposite]));
