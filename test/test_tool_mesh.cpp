@@ -27,11 +27,7 @@ ce_tool::Soup tool_soup(const std::vector<ce_tool::Point>& points, const Polygon
 {
   ce_tool::Soup soup;
   soup.points = points;
-  for (const std::vector<std::size_t>& polygon : polygons) {
-    for (std::size_t index : polygon)
-      soup.faces.add_index(index);
-    soup.faces.end_polygon();
-  }
+  soup.faces.append(polygons);
   return soup;
 }
 

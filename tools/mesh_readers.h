@@ -212,6 +212,19 @@ public:
   // Appends an index to the polygon being built, which end_polygon() closes.
   void add_index(std::size_t index) { indices_.push_back(index); }
   void end_polygon() { start_.push_back(indices_.size()); }
+  // Appends polygons of another form (a range of ranges of indices).
+  template <typename Polygon_range>
+  void append(const Polygon_range& polygons)
+  {
+    std::size_t indices = 0;
+    for (const auto& polygon : polygons)
+      indices += polygon.size();
+    reserve(size() + polygons.size(), indices_.size() + indices);
+    for (const auto& polygon : polygons) {
+      indices_.insert(indices_.end(), polygon.begin(), polygon.end());
+      end_polygon();
+    }
+  }
 
 private:
   std::vector<std::size_t> start_{0};

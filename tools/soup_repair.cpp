@@ -503,13 +503,7 @@ Mesh repaired_mesh(const Soup& soup, std::vector<V>& file_to_mesh)
     // polygon takes twice the memory (peak on a 1M-vertex OFF with a flipped face:
     // 410 bytes per vertex, 362 so).
     Flat_polygons flat;
-    flat.reserve(polygons.size(), std::accumulate(polygons.begin(), polygons.end(), std::size_t(0),
-                                                  [](std::size_t n, const std::vector<std::size_t>& p) { return n + p.size(); }));
-    for (const std::vector<std::size_t>& polygon : polygons) {
-      for (std::size_t index : polygon)
-        flat.add_index(index);
-      flat.end_polygon();
-    }
+    flat.append(polygons);
     polygons = Polygons();
     mesh = polygon_mesh(points, flat, halfedges);
   }

@@ -115,11 +115,7 @@ Soup read_input(const std::string& path)
     if (!ok)
       fail("malformed file '" + path + "': the " + ext.substr(1) +
            " reader failed (garbage, truncated, or invalid data)");
-    for (const std::vector<std::size_t>& polygon : polygons) {
-      for (std::size_t index : polygon)
-        soup.faces.add_index(index);
-      soup.faces.end_polygon();
-    }
+    soup.faces.append(polygons);
   }
   if (soup.points.empty())
     fail("empty mesh '" + path + "': no vertices");
