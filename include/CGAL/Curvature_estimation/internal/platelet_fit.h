@@ -249,13 +249,14 @@ private:
     if (!all_finite(center_))
       return false;
     neighborhood_.start(v);
-    offsets_.push_back(Vector::Zero());
+    const std::size_t end = neighborhood_.ring_end(1);
+    offsets_.resize(end);
+    offsets_[0] = Vector::Zero();
     double length_sum = 0;
     int length_count = 0;
-    const std::size_t end = neighborhood_.ring_end(1);
     for (std::size_t i = 1; i < end; ++i) {
       const Vector offset = neighborhood_.point(neighborhood_.vertices()[i]) - center_;
-      offsets_.push_back(offset);
+      offsets_[i] = offset;
       const double length = safe_norm(offset);
       if (std::isfinite(length)) {
         length_sum += length;
@@ -271,10 +272,10 @@ private:
     inverse_scale_ = 1 / scale_;
     if (!std::isnormal(inverse_scale_))
       inverse_scale_ = 0;
-    finite_.clear();
-    for (Vector& offset : offsets_) {
-      offset = to_scale(offset);
-      finite_.push_back(all_finite(offset));
+    finite_.resize(end);
+    for (std::size_t i = 0; i < end; ++i) {
+      offsets_[i] = to_scale(offsets_[i]);
+      finite_[i] = all_finite(offsets_[i]);
     }
     on_border_ = neighborhood_.center_on_border(v);
     whitened_ = false;
@@ -328,10 +329,7 @@ private:
   bool reach_ball(double radius)
   {
     const bool more = neighborhood_.grow_ball(radius * scale_, center_);
-    for (std::size_t i = offsets_.size(); i < neighborhood_.vertices().size(); ++i) {
-      offsets_.push_back(to_scale(neighborhood_.point(neighborhood_.vertices()[i]) - center_));
-      finite_.push_back(all_finite(offsets_.back()));
-    }
+    append_offsets();
     ball_neighbors_ = neighborhood_.ball_size() - 1;
     ball_squared_radius_ = radius * radius;
     return more;
@@ -358,12 +356,23 @@ private:
     while (neighborhood_.rings() < rings) {
       if (!neighborhood_.extend())
         return false;
-      for (std::size_t i = offsets_.size(); i < neighborhood_.vertices().size(); ++i) {
-        offsets_.push_back(to_scale(neighborhood_.point(neighborhood_.vertices()[i]) - center_));
-        finite_.push_back(all_finite(offsets_.back()));
-      }
+      append_offsets();
     }
     return true;
+  }
+
+  // The scaled offsets of the vertices gathered since the last call, and whether
+  // each is finite (sized once: a push_back per vertex was not inlined).
+  void append_offsets()
+  {
+    const auto& vertices = neighborhood_.vertices();
+    const std::size_t first = offsets_.size();
+    offsets_.resize(vertices.size());
+    finite_.resize(vertices.size());
+    for (std::size_t i = first; i < vertices.size(); ++i) {
+      offsets_[i] = to_scale(neighborhood_.point(vertices[i]) - center_);
+      finite_[i] = all_finite(offsets_[i]);
+    }
   }
 
   // Fits over the rings up to `rings`, widening up to `max_rings` until test (a)
