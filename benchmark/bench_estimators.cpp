@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Speed of every estimator of benchmark/estimators.h, in ns per vertex (the
 // `time_per_vertex` counter: seconds per vertex, e.g. 95n), and heap allocations per
-// vertex and call (`allocations_per_vertex`, all threads), on Surface_mesh:
+// vertex and call (`allocations_per_vertex`, all threads) and the peak of the heap the
+// calls held at once, per vertex (`peak_heap_bytes_per_vertex`), on Surface_mesh:
 // grids of .1(cos pi x + cos pi y) with about 10k, 100k and 1M vertices and CGAL's
 // bunny, armadillo, elephant and Chinese dragon; sequential and parallel (TBB,
 // at most 2 threads; CGAL 6's estimators have no parallel version: sequential only).
@@ -25,7 +26,9 @@
 #include <tbb/global_control.h>
 #endif
 
+#include <algorithm>
 #include <atomic>
+#include <cstddef>
 #include <cstdlib>
 #include <cstring>
 #include <map>
@@ -34,48 +37,111 @@
 #include <string>
 #include <vector>
 
-// Every heap allocation of the process, on any thread, is counted: the report checks
-// that our estimators allocate nothing per vertex (`allocations_per_vertex`). A slot
-// per thread, written only by its thread, so that counting does not slow down the
-// estimators that do allocate (jet fitting) by contention on one shared counter.
+// Every heap allocation of the process through operator new, on any thread, is counted:
+// the report checks that our estimators allocate nothing per vertex
+// (`allocations_per_vertex`) and that their temporary memory stays small
+// (`peak_heap_bytes_per_vertex`). A slot per thread, written only by its thread, so that
+// counting does not slow down the estimators that do allocate (jet fitting) by contention
+// on shared counters. Each block carries its size in a header, so that a delete knows
+// what it frees.
 namespace {
 constexpr int allocation_slots = 64;
-std::atomic<unsigned long long> allocations_by_slot[allocation_slots];
-std::atomic<unsigned long long> allocations_beyond_slots{0};  // threads without a slot of their own
+constexpr std::size_t size_header = alignof(std::max_align_t); // keeps the block aligned for any type
+
+struct alignas(64) Allocation_slot // a cache line each: no false sharing between threads
+{
+  std::atomic<unsigned long long> allocations{0};
+  std::atomic<long long> live_bytes{0}; // allocated minus freed by this thread since the last reset
+  std::atomic<long long> peak_bytes{0}; // the largest live_bytes since the last reset
+};
+Allocation_slot slots[allocation_slots];
+Allocation_slot beyond_slots; // threads without a slot of their own share this one
 std::atomic<int> next_allocation_slot{0};
 
-void count_allocation()
+Allocation_slot& own_slot()
 {
   thread_local const int slot = next_allocation_slot.fetch_add(1);
-  if (slot < allocation_slots) {
-    std::atomic<unsigned long long>& own = allocations_by_slot[slot];
-    own.store(own.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
-  } else {
-    allocations_beyond_slots.fetch_add(1, std::memory_order_relaxed);
+  return slot < allocation_slots ? slots[slot] : beyond_slots;
+}
+
+// An increment by the slot's own thread, the only one that writes it: no read-modify-write needed.
+template <typename T>
+void add(std::atomic<T>& a, T x)
+{
+  a.store(a.load(std::memory_order_relaxed) + x, std::memory_order_relaxed);
+}
+
+void count_allocation(std::size_t size)
+{
+  Allocation_slot& s = own_slot();
+  if (&s == &beyond_slots) {
+    beyond_slots.allocations.fetch_add(1, std::memory_order_relaxed);
+    return; // shared: its live bytes would race; the report's runs use at most 2 threads
   }
+  add(s.allocations, 1ULL);
+  add(s.live_bytes, static_cast<long long>(size));
+  const long long live = s.live_bytes.load(std::memory_order_relaxed);
+  if (live > s.peak_bytes.load(std::memory_order_relaxed))
+    s.peak_bytes.store(live, std::memory_order_relaxed);
+}
+
+void count_free(std::size_t size)
+{
+  Allocation_slot& s = own_slot();
+  if (&s != &beyond_slots)
+    add(s.live_bytes, -static_cast<long long>(size));
 }
 
 unsigned long long heap_allocations()
 {
-  unsigned long long sum = allocations_beyond_slots.load(std::memory_order_relaxed);
-  for (const auto& count : allocations_by_slot)
-    sum += count.load(std::memory_order_relaxed);
+  unsigned long long sum = beyond_slots.allocations.load(std::memory_order_relaxed);
+  for (const Allocation_slot& s : slots)
+    sum += s.allocations.load(std::memory_order_relaxed);
+  return sum;
+}
+
+// Called between calls, when no other thread allocates.
+void reset_peak_heap()
+{
+  for (Allocation_slot& s : slots) {
+    s.live_bytes.store(0, std::memory_order_relaxed);
+    s.peak_bytes.store(0, std::memory_order_relaxed);
+  }
+}
+
+// The most heap that the call since reset_peak_heap() held at once: exact for one thread;
+// with several, the sum of each thread's peak, an upper bound (a block freed by another
+// thread than its allocator's lowers only the freeing thread's count).
+long long peak_heap_bytes()
+{
+  long long sum = 0;
+  for (const Allocation_slot& s : slots)
+    sum += s.peak_bytes.load(std::memory_order_relaxed);
   return sum;
 }
 } // namespace
 
 void* operator new(std::size_t size)
 {
-  count_allocation();
-  if (void* p = std::malloc(size == 0 ? 1 : size))
-    return p;
+  count_allocation(size);
+  if (void* p = std::malloc(size_header + size)) {
+    *static_cast<std::size_t*>(p) = size;
+    return static_cast<char*>(p) + size_header;
+  }
   throw std::bad_alloc();
 }
 void* operator new[](std::size_t size) { return operator new(size); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p) noexcept
+{
+  if (!p)
+    return;
+  void* block = static_cast<char*>(p) - size_header;
+  count_free(*static_cast<std::size_t*>(block));
+  std::free(block);
+}
+void operator delete[](void* p) noexcept { operator delete(p); }
+void operator delete(void* p, std::size_t) noexcept { operator delete(p); }
+void operator delete[](void* p, std::size_t) noexcept { operator delete(p); }
 
 namespace {
 
@@ -135,14 +201,19 @@ void time_estimator(benchmark::State& state, Estimator estimator, const Input& i
                          .vertex_Gaussian_curvature_map(gaussian)
                          .vertex_principal_curvatures_and_directions_map(principal);
   const unsigned long long allocations_before = heap_allocations();
+  long long peak_heap = 0; // of the calls, the largest
   for (auto _ : state) {
+    reset_peak_heap();
     run<ConcurrencyTag>(estimator, *mesh, given, b->h, outputs);
+    peak_heap = std::max(peak_heap, peak_heap_bytes());
     benchmark::DoNotOptimize(mean[*vertices(*mesh).begin()]);
     benchmark::ClobberMemory();
   }
   const double n = static_cast<double>(num_vertices(*mesh));
   state.counters["allocations_per_vertex"] =
     double(heap_allocations() - allocations_before) / (n * double(state.iterations()));
+  // Heap beyond the mesh and the output maps (allocated above): the estimator's temporaries.
+  state.counters["peak_heap_bytes_per_vertex"] = double(peak_heap) / n;
   state.counters["vertices"] = n;
   state.counters["threads"] = std::is_same<ConcurrencyTag, CGAL::Sequential_tag>::value ? 1 : parallel_threads;
   // Seconds per vertex, printed with an SI prefix (e.g. 95n = 95 ns).
