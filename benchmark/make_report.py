@@ -276,6 +276,12 @@ def mesh_order(meshes):
 # Speed
 # ---------------------------------------------------------------------------
 
+def seq_par_rows(values, meshes, fmt):
+    """A row per estimator of "seq / par" cells from {(estimator, mesh, seq|par): value}."""
+    return [[LABEL[e]] + ["%s / %s" % (fmt(values.get((e, m, "seq"))), fmt(values.get((e, m, "par")))) for m in meshes]
+            for e, _ in ESTIMATORS]
+
+
 def speed_section(speed, figures, quick):
     meshes = mesh_order(list(dict.fromkeys(m for (_, m, _) in speed)))
     vertices = {m: v for (_, m, _), (_, v) in speed.items()}
@@ -315,14 +321,7 @@ def speed_section(speed, figures, quick):
                   "Counted by `bench_estimators` (its own `operator new`), seq / par. A bounded number per call "
                   "(buffers that grow to the largest neighborhood, one worker per thread, TBB) shrinks as "
                   "1/vertices; an allocation per vertex shows as 1 or more.", ""]
-        rows = []
-        for e, _ in ESTIMATORS:
-            row = [LABEL[e]]
-            for m in meshes:
-                a, b = ALLOCATIONS.get((e, m, "seq")), ALLOCATIONS.get((e, m, "par"))
-                row.append("%s / %s" % (fmt_count(a), fmt_count(b)))
-            rows.append(row)
-        lines += [table(header, rows), ""]
+        lines += [table(header, seq_par_rows(ALLOCATIONS, meshes, fmt_count)), ""]
     if PEAK_HEAP:
         lines += ["### Peak heap per vertex of a call, bytes (temporary memory)", "",
                   "The most heap that one call held at once beyond the mesh and the output maps, over the size of "
@@ -330,14 +329,7 @@ def speed_section(speed, figures, quick):
                   "takes back, per thread, and keeps each call's peak (with 2 threads, the sum of each thread's "
                   "peak: an upper bound). Memory that a library takes with `malloc` (Eigen's dynamic matrices "
                   "in jet fitting) is not seen. The target for the default is %g bytes per vertex." % TARGET_PEAK_HEAP, ""]
-        rows = []
-        for e, _ in ESTIMATORS:
-            row = [LABEL[e]]
-            for m in meshes:
-                a, b = PEAK_HEAP.get((e, m, "seq")), PEAK_HEAP.get((e, m, "par"))
-                row.append("%s / %s" % (fmt_bytes(a), fmt_bytes(b)))
-            rows.append(row)
-        lines += [table(header, rows), ""]
+        lines += [table(header, seq_par_rows(PEAK_HEAP, meshes, fmt_bytes)), ""]
     lines += ["### CGAL's estimators / paraboloid (default normals), same run", ""]
     rows = []
     for e, mode in (("jet_d2_2rings", "seq"), ("jet_d2_2rings", "par"), ("icc", "seq"), ("icc_our_normals", "seq")):
