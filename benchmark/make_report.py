@@ -193,14 +193,11 @@ def read_speed(path):
         ns = b["time_per_vertex"] * 1e9
         if key not in speed or ns < speed[key][0]:
             speed[key] = (ns, int(b["vertices"]))
-        # Heap allocations per vertex and call: the largest of the repetitions.
-        allocations = b.get("allocations_per_vertex")
-        if allocations is not None:
-            ALLOCATIONS[key] = max(allocations, ALLOCATIONS.get(key, 0.0))
-        # Peak heap of a call, bytes per vertex: the largest of the repetitions.
-        peak = b.get("peak_heap_bytes_per_vertex")
-        if peak is not None:
-            PEAK_HEAP[key] = max(peak, PEAK_HEAP.get(key, 0.0))
+        # Heap allocations per vertex and call, and the peak heap of a call in bytes per
+        # vertex: the largest of the repetitions.
+        for counter, values in (("allocations_per_vertex", ALLOCATIONS), ("peak_heap_bytes_per_vertex", PEAK_HEAP)):
+            if counter in b:
+                values[key] = max(b[counter], values.get(key, 0.0))
     context = data.get("context", {})
     # How much of a core a sequential run got: its CPU time over its wall-clock time. Near 1 on
     # an idle machine; well below 1 when other processes compete for the cores, and then no
