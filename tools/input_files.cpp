@@ -32,12 +32,12 @@ std::uintmax_t check_readable(const std::string& path)
   return bytes;
 }
 
-std::string read_text_file(const std::string& path)
+File_text read_text_file(const std::string& path)
 {
   const std::uintmax_t bytes = check_readable(path);
   std::ifstream in(path, std::ios::binary);
-  std::string text(static_cast<std::size_t>(bytes), '\0');
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  File_text text(static_cast<std::size_t>(bytes));
+  in.read(text.data(), static_cast<std::streamsize>(bytes));
   if (in.bad() || static_cast<std::uintmax_t>(in.gcount()) != bytes)
     fail("cannot read '" + path + "': read error");
   return text;

@@ -13,6 +13,7 @@
 #include <fstream>
 #include <limits>
 #include <new>
+#include <string_view>
 #include <system_error>
 
 namespace ce_tool {
@@ -97,7 +98,7 @@ Soup read_input(const std::string& path)
 
   Soup soup;
   if (ext == ".off") {
-    soup = read_strictly(path, [](const std::string& text) { return read_off<Point>(text); });
+    soup = read_strictly(path, [](std::string_view text) { return read_off<Point>(text); });
   } else {
     const std::uintmax_t bytes = check_readable(path);
     if (ext == ".ply")

@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <string_view>
 #include <system_error>
 #include <utility>
 
@@ -41,7 +42,7 @@ std::string scalars_path(const std::string& mesh_path, const std::string& scalar
 Tetrahedral_input read_tetrahedral_input(const std::string& mesh_path, const std::string& scalars)
 {
   const Tetrahedral_mesh_data data =
-    read_strictly(mesh_path, [](const std::string& text) { return read_medit_mesh(text); });
+    read_strictly(mesh_path, [](std::string_view text) { return read_medit_mesh(text); });
   Tetrahedral_input input;
   input.mesh.points.reserve(data.points.size());
   for (const auto& p : data.points)
@@ -58,7 +59,7 @@ Tetrahedral_input read_tetrahedral_input(const std::string& mesh_path, const std
     }
   }
   const std::size_t vertices = data.points.size();
-  input.scalars = read_strictly(scalars_path(mesh_path, scalars), [vertices](const std::string& text) {
+  input.scalars = read_strictly(scalars_path(mesh_path, scalars), [vertices](std::string_view text) {
     return read_medit_sol(text, vertices);
   });
   return input;
