@@ -39,7 +39,8 @@ namespace internal {
 // curvature, and the vertex stays not_estimable. The Gauss map's normals are
 // computed on demand: the fallback is rare (0.3% of the vertices of CGAL's data
 // meshes), and a table of all normals would cost a second fit per vertex
-// everywhere.
+// everywhere; for the same reason its fitter circulates the halfedges rather
+// than build a second Vertex_adjacency.
 //
 // Jet fitting's fit also replaces, where it is determined, Hamann's fit at a
 // boundary vertex that only test (b) accepts (for the normal or the fit), with
@@ -63,7 +64,7 @@ public:
   Paraboloid_estimator(const FaceGraph& g, VertexPointMap vpm, const Fit_parameters& fit)
     : fitter_(g, vpm, fit.settings), method_(fit.normal_method),
       gauss_map_(g, vpm, Vertex_normal_estimator<FaceGraph, VertexPointMap>{
-                           Platelet_fitter<FaceGraph, VertexPointMap>(g, vpm, fit.settings), fit.normal_method, true})
+                           Platelet_fitter<FaceGraph, VertexPointMap>(g, vpm, fit.settings, nullptr), fit.normal_method, true})
   {}
 
   Surface_estimate estimate(typename boost::graph_traits<FaceGraph>::vertex_descriptor v, const Eigen::Vector3d* given)
@@ -180,7 +181,10 @@ private:
 /// more than the degree's. The degree-3 fit is solved again less the curvature's quartic
 /// term, as above. The normal these fits read their curvatures in (the frame's normal
 /// corrected by the fitted gradient, of order 3 and 4) is what `estimate_vertex_normals()`
-/// writes with the same `fit_degree`.
+/// writes with the same `fit_degree`. These fits, and those over a ball or over more than
+/// one starting ring, read the rings from a table of every vertex's neighbors, built once
+/// per call where vertex descriptors are indices (`Surface_mesh`): 8 bytes per vertex and
+/// 4 per halfedge of temporary memory (32 bytes per vertex of valence 6).
 ///
 /// **Curvature at a scale.** With `ball_radius(r)` the neighborhood is not a number
 /// of rings but the part of the mesh inside the ball of radius r about the vertex
