@@ -9,7 +9,7 @@
 //    that the direct solver loses;
 //  - the scatter matrix of points whose smallest eigenvector is the normal of their
 //    least-squares hyperplane: least_squares_hyperplane_normal, in R^3 (the frame of
-//    the degree-4 fit) by Eigen's direct solver, whose eigenvector of a well-separated
+//    the degree-4 fit) by smallest_eigenvector, whose eigenvector of a well-separated
 //    smallest eigenvalue is accurate (where it is not separated, the points are nearly
 //    on a line and the fit in that frame is refused), in R^4 (the tetrahedral fit's
 //    restart) by cyclic Jacobi rotations, because Eigen's iterative solver at that size
@@ -71,10 +71,60 @@ bool symmetric_eigen_accurate(const Eigen::Matrix<double, D, D>& m, Eigen::Matri
   return true;
 }
 
+// The unit eigenvector of the smallest eigenvalue of a symmetric positive
+// semi-definite 3 x 3 matrix A (NaN where A is zero). The eigenvalue is the root
+// of p(l) = det(A - l I) that Newton's method reaches from 0: below the smallest
+// eigenvalue l1 the step -p/p' = 1 / sum_i 1/(l_i - l) is positive and at most
+// l1 - l, so the iterates rise to l1 without passing it, at once where l1 is far
+// below the others (points near a plane: the first step is l1 (1 - O(l1/l2)), and
+// the convergence is quadratic), linearly where l1 is a double root. The
+// eigenvector is the longest cross product of two rows of A - l1 I, as in Eigen's
+// direct solver, which spends its time on the trigonometric closed form of all
+// three eigenvalues instead. Near a double root l1 = l2 the eigenvalue is only
+// known to about sqrt(rounding), and so is the eigenvector (any unit vector of
+// their plane); the points are then near a line, and the fits refuse the frame.
+inline Eigen::Vector3d smallest_eigenvector(const Eigen::Matrix3d& a)
+{
+  const double c2 = a.trace();
+  const double c1 = a(0, 0) * a(1, 1) - a(0, 1) * a(0, 1) + a(0, 0) * a(2, 2) - a(0, 2) * a(0, 2) +
+                    a(1, 1) * a(2, 2) - a(1, 2) * a(1, 2);
+  const double c0 = a.determinant();
+  double l = 0;
+  // c1 >= l2 l3 >= l2 c2 / 3: where it is below 1e-12 c2^2, A is of rank 1 or 0
+  // to that precision, its p and slope rounding errors, and l1 = 0.
+  if (c1 > 1e-12 * c2 * c2)
+    for (int iteration = 0; iteration < 100; ++iteration) {
+      const double p = c0 - l * (c1 - l * (c2 - l));
+      const double slope = c1 - l * (2 * c2 - 3 * l);  // -p'(l), positive below l1
+      const double step = p / slope;
+      if (!(step > 1e-17 * c2))  // converged, or past l1 by rounding
+        break;
+      l += step;
+    }
+  Eigen::Matrix3d shifted = a;
+  shifted.diagonal().array() -= l;
+  const Eigen::Vector3d r0 = shifted.row(0), r1 = shifted.row(1), r2 = shifted.row(2);
+  const Eigen::Vector3d candidates[3] = {r0.cross(r1), r0.cross(r2), r1.cross(r2)};
+  int longest = 0;
+  for (int i = 1; i < 3; ++i)
+    if (candidates[i].squaredNorm() > candidates[longest].squaredNorm())
+      longest = i;
+  // Rows that are parallel to rounding (A - l1 I of rank 1: l1 a double root,
+  // points on a line) have cross products of rounding errors: then any unit
+  // vector orthogonal to the longest row is an eigenvector of l1.
+  if (!(candidates[longest].norm() > 1e-12 * c2 * c2)) {
+    int row = 0;
+    for (int i = 1; i < 3; ++i)
+      if (shifted.row(i).squaredNorm() > shifted.row(row).squaredNorm())
+        row = i;
+    return shifted.row(row).transpose().unitOrthogonal();
+  }
+  return candidates[longest] / candidates[longest].norm();
+}
+
 // The unit normal of the least-squares hyperplane through `count` points: the
-// eigenvector of the smallest eigenvalue of their scatter matrix, in R^3 by Eigen's
-// direct solver (measured: 2.2k instead of 4.4k instructions with 37 points, with the
-// scatter), in R^4 by cyclic Jacobi rotations (see above).
+// eigenvector of the smallest eigenvalue of their scatter matrix, in R^3 by
+// smallest_eigenvector, in R^4 by cyclic Jacobi rotations (see above).
 template <int N>
 Eigen::Matrix<double, N, 1> least_squares_hyperplane_normal(const Eigen::Matrix<double, N, 1>* points,
                                                             std::size_t count)
@@ -90,11 +140,8 @@ Eigen::Matrix<double, N, 1> least_squares_hyperplane_normal(const Eigen::Matrix<
     const Vector offset = points[i] - mean;
     scatter.noalias() += offset * offset.transpose();
   }
-  if constexpr (N == 3) {
-    Eigen::SelfAdjointEigenSolver<Square> eigen;
-    eigen.computeDirect(scatter);
-    return eigen.eigenvectors().col(0);
-  }
+  if constexpr (N == 3)
+    return smallest_eigenvector(scatter);
   Square vectors = Square::Identity();
   for (int sweep = 0; sweep < 50; ++sweep) {
     double off = 0;
