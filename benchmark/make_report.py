@@ -291,7 +291,9 @@ def speed_section(speed, figures, quick):
                  "Grids: `grid_n` is the n x n grid of .1(cos pi x + cos pi y). `seq` is `CGAL::Sequential_tag`, "
                  "`par` is `CGAL::Parallel_tag` with at most 2 TBB threads; speed-up = seq / par. "
                  "The \"given normals\" variant gets precomputed normals (not timed). Best of 3 repetitions "
-                 "(jet d=2 1 ring and jet d=4: one; quick runs: one), each of at least 1 s or one call.")
+                 "(jet d=2 1 ring and jet d=4: one; quick runs: one), each of at least 1 s or one call; "
+                 "the repetitions of all cases run interleaved in a random order, so that a case's best "
+                 "escapes a disturbance of the shared machine that lasts a few minutes.")
     if any(e in CGAL6 for e, _ in ESTIMATORS):
         lines.append("")
         lines.append("CGAL 6's estimators have no parallel version: sequential only. ICC is "

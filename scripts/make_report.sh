@@ -65,9 +65,11 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCE_BUILD_BENCHMARKS=ON -DCE_
 cmake --build "$build" --target accuracy_runner bench_estimators curvature -j "$jobs"
 mkdir -p "$raw"
 
-# Speed first: it is the part that suffers most from a busy machine.
+# Speed first: it is the part that suffers most from a busy machine. The repetitions
+# interleaved in a random order: back to back, the 3 of a case can all fall in one
+# disturbance (on 2026-12-04 fit_degree(4) read 20% slow in all 3, on every mesh).
 step "speed benchmarks"
-"$build/benchmark/bench_estimators" "${quick[@]}" \
+"$build/benchmark/bench_estimators" "${quick[@]}" --benchmark_enable_random_interleaving=true \
   --benchmark_out="$raw/speed.json" --benchmark_out_format=json
 
 step "accuracy runner"
