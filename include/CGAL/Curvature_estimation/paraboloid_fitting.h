@@ -183,8 +183,8 @@ private:
 /// corrected by the fitted gradient, of order 3 and 4) is what `estimate_vertex_normals()`
 /// writes with the same `fit_degree`. These fits, and those over a ball or over more than
 /// one starting ring, read the rings from a table of every vertex's neighbors, built once
-/// per call where vertex descriptors are indices (`Surface_mesh`): 8 bytes per vertex and
-/// 4 per halfedge of temporary memory (32 bytes per vertex of valence 6).
+/// per call where vertex descriptors are indices (`Surface_mesh`): 4 bytes per vertex and
+/// 4 per halfedge of temporary memory (28 bytes per vertex of valence 6).
 ///
 /// **Curvature at a scale.** With `ball_radius(r)` the neighborhood is not a number
 /// of rings but the part of the mesh inside the ball of radius r about the vertex

@@ -129,21 +129,31 @@ private:
   std::vector<Vertex> to_expand_;  // in the ball, their neighbors still to be met
 };
 
+// Calls visit(neighbors[k]) for offsets[i] <= k < offsets[i + 1]: the neighbors
+// of vertex i in compressed rows, the layout of Vertex_adjacency and of
+// Tetrahedral_complex_stars.
+template <typename Offsets, typename Neighbors, typename Visit>
+void for_each_listed_neighbor(const Offsets& offsets, const Neighbors& neighbors, std::size_t i, const Visit& visit)
+{
+  for (auto k = offsets[i]; k < offsets[i + 1]; ++k)
+    visit(neighbors[k]);
+}
+
 // The neighbors of every vertex of a FaceGraph whose vertex descriptors are
 // indices (Surface_mesh), in the order of the halfedges around it, as 32-bit
-// indices in one array: the rings beyond the first read them instead of
-// circulating the halfedges, a chain of dependent loads over the mesh's
-// connectivity (on a grid of 100,000 vertices, fit_degree(4) spent 16% of its
-// time there). 32 bytes per vertex of valence 6.
+// indices in compressed rows (for_each_listed_neighbor): the rings beyond the
+// first read them instead of circulating the halfedges, a chain of dependent
+// loads over the mesh's connectivity (on a grid of 100,000 vertices,
+// fit_degree(4) spent 16% of its time there). 28 bytes per vertex of valence 6.
 struct Vertex_adjacency
 {
-  std::vector<std::uint32_t> first;      // per vertex index, where its neighbors start
-  std::vector<std::uint32_t> valence;    // per vertex index, their number
+  std::vector<std::uint32_t> offsets;  // per vertex index, and one more
   std::vector<std::uint32_t> neighbors;
 };
 
-// The adjacency of `g`, or null where its vertex descriptors are not indices or
-// do not fit in 32 bits.
+// The adjacency of `g`, or null where its vertex descriptors are not indices,
+// do not fit in 32 bits or are not listed in ascending order by vertices(g)
+// (they are in Surface_mesh).
 template <typename FaceGraph>
 std::shared_ptr<const Vertex_adjacency> vertex_adjacency(const FaceGraph& g)
 {
@@ -155,23 +165,29 @@ std::shared_ptr<const Vertex_adjacency> vertex_adjacency(const FaceGraph& g)
   } else {
     constexpr std::size_t limit = (std::numeric_limits<std::uint32_t>::max)();
     std::size_t end = 0;
-    for (vertex_descriptor v : vertices(g))
-      end = (std::max)(end, static_cast<std::size_t>(v) + 1);
-    if (end > limit || num_halfedges(g) > limit)
-      return nullptr;
-    auto adjacency = std::make_shared<Vertex_adjacency>();
-    adjacency->first.assign(end, 0);
-    adjacency->valence.assign(end, 0);
-    adjacency->neighbors.reserve(num_halfedges(g));
     for (vertex_descriptor v : vertices(g)) {
       const std::size_t i = static_cast<std::size_t>(v);
-      adjacency->first[i] = static_cast<std::uint32_t>(adjacency->neighbors.size());
+      if (i < end)
+        return nullptr;
+      end = i + 1;
+    }
+    if (end >= limit || num_halfedges(g) > limit)
+      return nullptr;
+    auto adjacency = std::make_shared<Vertex_adjacency>();
+    std::vector<std::uint32_t>& offsets = adjacency->offsets;
+    std::vector<std::uint32_t>& neighbors = adjacency->neighbors;
+    offsets.assign(end + 1, 0);
+    neighbors.reserve(num_halfedges(g));
+    std::size_t next = 0;  // the first index whose offset is not set; those without a vertex get no neighbors
+    for (vertex_descriptor v : vertices(g)) {
+      for (const std::size_t i = static_cast<std::size_t>(v); next <= i; ++next)
+        offsets[next] = static_cast<std::uint32_t>(neighbors.size());
       const halfedge_descriptor h = halfedge(v, g);
       if (h != boost::graph_traits<FaceGraph>::null_halfedge())
         for (halfedge_descriptor incoming : halfedges_around_target(h, g))
-          adjacency->neighbors.push_back(static_cast<std::uint32_t>(static_cast<std::size_t>(source(incoming, g))));
-      adjacency->valence[i] = static_cast<std::uint32_t>(adjacency->neighbors.size()) - adjacency->first[i];
+          neighbors.push_back(static_cast<std::uint32_t>(static_cast<std::size_t>(source(incoming, g))));
     }
+    offsets[end] = static_cast<std::uint32_t>(neighbors.size());
     return adjacency;
   }
 }
@@ -281,10 +297,8 @@ private:
   {
     if constexpr (indexed)
       if (adjacency_) {
-        const std::size_t i = static_cast<std::size_t>(v);
-        const std::uint32_t* const neighbors = adjacency_->neighbors.data() + adjacency_->first[i];
-        for (std::uint32_t k = 0; k < adjacency_->valence[i]; ++k)
-          visit(vertex_descriptor(neighbors[k]));
+        for_each_listed_neighbor(adjacency_->offsets, adjacency_->neighbors, static_cast<std::size_t>(v),
+                                 [&](std::uint32_t w) { visit(vertex_descriptor(w)); });
         return;
       }
     const halfedge_descriptor h = halfedge(v, g);
@@ -448,8 +462,7 @@ public:
     if (!ball_.active())
       ring_ends_.push_back(vertices_.size());
     const auto neighbors = [&](std::size_t v, const auto& visit) {
-      for (std::size_t k = stars.neighbor_offsets[v]; k < stars.neighbor_offsets[v + 1]; ++k)
-        visit(stars.neighbors[k]);
+      for_each_listed_neighbor(stars.neighbor_offsets, stars.neighbors, v, visit);
     };
     const auto reach = [&](std::size_t w) {
       if (stamps_[w] == stamp_)
@@ -472,13 +485,12 @@ private:
   template <typename Stars>
   void add_neighbors(std::size_t v, const Stars& stars)
   {
-    for (std::size_t k = stars.neighbor_offsets[v]; k < stars.neighbor_offsets[v + 1]; ++k) {
-      const std::size_t w = stars.neighbors[k];
+    for_each_listed_neighbor(stars.neighbor_offsets, stars.neighbors, v, [&](std::size_t w) {
       if (stamps_[w] != stamp_) {
         stamps_[w] = stamp_;
         vertices_.push_back(w);
       }
-    }
+    });
   }
 
   std::vector<unsigned> stamps_;
