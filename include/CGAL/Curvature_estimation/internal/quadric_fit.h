@@ -109,8 +109,10 @@
 // Full unrolling of the fixed-size loops below: with constant indices the packed
 // matrix addressing folds away (without it GCC leaves them as loops that cost
 // several times more). Not for Clang, which warns that it cannot unroll the
-// nested loops as asked; its own heuristics decide there.
-#if defined(__GNUC__) && !defined(__clang__)
+// nested loops as asked; its own heuristics decide there. Not under GCC's
+// AddressSanitizer either, whose instrumented loops GCC warns it cannot unroll
+// as asked (and whose builds are for finding errors, not for speed).
+#if defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
 #define CGAL_CURVATURE_ESTIMATION_UNROLL _Pragma("GCC unroll 32")
 #else
 #define CGAL_CURVATURE_ESTIMATION_UNROLL
