@@ -71,6 +71,16 @@ bool symmetric_eigen_accurate(const Eigen::Matrix<double, D, D>& m, Eigen::Matri
   return true;
 }
 
+// The index of the longest of three vectors (the first of equals).
+inline int longest_of_three(const Eigen::Vector3d (&vectors)[3])
+{
+  int longest = 0;
+  for (int i = 1; i < 3; ++i)
+    if (vectors[i].squaredNorm() > vectors[longest].squaredNorm())
+      longest = i;
+  return longest;
+}
+
 // The unit eigenvector of the smallest eigenvalue of a symmetric positive
 // semi-definite 3 x 3 matrix A (NaN where A is zero). The eigenvalue is the root
 // of p(l) = det(A - l I) that Newton's method reaches from 0: below the smallest
@@ -103,23 +113,15 @@ inline Eigen::Vector3d smallest_eigenvector(const Eigen::Matrix3d& a)
     }
   Eigen::Matrix3d shifted = a;
   shifted.diagonal().array() -= l;
-  const Eigen::Vector3d r0 = shifted.row(0), r1 = shifted.row(1), r2 = shifted.row(2);
-  const Eigen::Vector3d candidates[3] = {r0.cross(r1), r0.cross(r2), r1.cross(r2)};
-  int longest = 0;
-  for (int i = 1; i < 3; ++i)
-    if (candidates[i].squaredNorm() > candidates[longest].squaredNorm())
-      longest = i;
+  const Eigen::Vector3d rows[3] = {shifted.row(0), shifted.row(1), shifted.row(2)};
+  const Eigen::Vector3d candidates[3] = {rows[0].cross(rows[1]), rows[0].cross(rows[2]), rows[1].cross(rows[2])};
+  const Eigen::Vector3d& longest = candidates[longest_of_three(candidates)];
   // Rows that are parallel to rounding (A - l1 I of rank 1: l1 a double root,
   // points on a line) have cross products of rounding errors: then any unit
   // vector orthogonal to the longest row is an eigenvector of l1.
-  if (!(candidates[longest].norm() > 1e-12 * c2 * c2)) {
-    int row = 0;
-    for (int i = 1; i < 3; ++i)
-      if (shifted.row(i).squaredNorm() > shifted.row(row).squaredNorm())
-        row = i;
-    return shifted.row(row).transpose().unitOrthogonal();
-  }
-  return candidates[longest] / candidates[longest].norm();
+  if (!(longest.norm() > 1e-12 * c2 * c2))
+    return rows[longest_of_three(rows)].unitOrthogonal();
+  return longest / longest.norm();
 }
 
 // The unit normal of the least-squares hyperplane through `count` points: the
