@@ -1094,6 +1094,44 @@ std::vector<Vec<D>> mapped(const std::vector<Vec<D>>& xs, const Mat<D, D>& a)
   return out;
 }
 
+// solve decides test (a) by cheaper upper bounds of the condition number where
+// they are below the threshold (quadric_fit.h, Cost): a bound below the number
+// would accept fits that the number refuses. Its decisions must be those of the
+// number, just above and below it and far from it, on stencils stretched by up
+// to 10 (numbers from about 10 to 1e10).
+template <int F, int L>
+void check_decisions_are_those_of_the_condition_number(Random& random, int trials)
+{
+  using Fit = CEI::Taylor_fit<2, F, L>;
+  for (int trial = 0; trial < trials; ++trial) {
+    const int m = Fit::unknowns + 2 + trial % 20;
+    const std::vector<Vec<2>> xs =
+      mapped<2>(spread_stencil_2d(random, m, 0.2, 1.0), stretch_map<2>(random, std::pow(10.0, random.uniform(0, 1))));
+    Fit fit;
+    const auto accepts = [&](double max_condition) {
+      fit.clear();
+      for (const Vec<2>& x : xs)
+        fit.add(x, 1.0 + x[0] * x[1]);
+      return fit.solve(max_condition);
+    };
+    ASSERT_TRUE(accepts(1e300)) << "Taylor_fit<2," << F << "," << L << ">, trial " << trial;
+    const double condition = fit.condition_number();
+    for (double factor : {1 + 1e-9, 2.0, 1e3})
+      EXPECT_TRUE(accepts(factor * condition)) << "Taylor_fit<2," << F << "," << L << ">, trial " << trial;
+    for (double factor : {1 - 1e-9, 0.5, 1e-3})
+      EXPECT_FALSE(accepts(factor * condition)) << "Taylor_fit<2," << F << "," << L << ">, trial " << trial;
+  }
+}
+
+TEST(Conditioning, SolveAcceptsExactlyWhereTheConditionNumberIsAtMostTheThreshold)
+{
+  Random random(63);
+  check_decisions_are_those_of_the_condition_number<2, 2>(random, 100);
+  check_decisions_are_those_of_the_condition_number<1, 2>(random, 100);
+  check_decisions_are_those_of_the_condition_number<1, 3>(random, 100);
+  check_decisions_are_those_of_the_condition_number<1, 4>(random, 100);
+}
+
 template <int D>
 std::vector<Vec<D>> spread_stencil(Random& random, int m)
 {

@@ -82,13 +82,14 @@
 // LastOrder 4, 25 against 45 at 3), which add sums per sample; the right-hand
 // side is summed in the unscaled monomials, scaled once per solve. For surfaces
 // at LastOrder 3 and 4 both are summed two at a time, in pairs of SSE2 lanes
-// (see fill_windows). N = L L^T (Cholesky, read from the moments) is inverted as
-// L^-1 (N^-1 = L^-T L^-1, which also solves), both in pairs of lanes too, and
-// ||N^-1||_1 <= ||L^-1||_1 ||L^-1||_inf decides test (a) where it is below the
-// threshold; only above it is ||N^-1||_1 computed (as costly as the
-// factorisation), so that the decisions are those of the exact number. Each
-// lane computes what the scalar loops would, in the same order: the results
-// do not depend on the pairs, to the bit.
+// (see fill_windows). N = L L^T (Cholesky, read from the moments, in pairs of
+// lanes too) solves by substitution. Test (a) takes the first of three upper
+// bounds of cond_1(N) that is below the threshold: one from L alone (two
+// triangular solves), one from L^-1 (inverting L, in pairs of lanes, costs as
+// much as the factorisation), and the exact number (N^-1 = L^-T L^-1, as costly
+// again), so that the decisions are those of the exact number. Each lane
+// computes what the scalar loops would, in the same order: the results do not
+// depend on the pairs, to the bit.
 //
 // The estimators (platelet_fit.h) try (a) on each neighborhood up to the widest,
 // and (b) on the widest where (a) accepts none: where (a) accepts, the fit and
@@ -350,20 +351,32 @@ public:
     condition_pending_ = false;
     if (size_ < unknowns)
       return false;
-    if (!inverse_factor<unknowns>(factor_))
+    if (!cholesky_factor<unknowns>(factor_, inverse_diagonal_))
       return false;
     own_norm_ = one_norm<unknowns>();
-    // ||N^-1||_1 = ||L^-T L^-1||_1 <= ||L^-1||_1 ||L^-1||_inf: the product, which
-    // costs as much as the factorisation, only where this bound does not decide.
-    if (own_norm_ * triangular_norms_product<unknowns>(factor_) <= max_condition)
+    // ||N^-1||_1 = ||L^-T L^-1||_1 <= ||L^-1||_1 ||L^-1||_inf, bounded from L
+    // alone; the inverse of L, which costs as much as the factorisation, only
+    // where that bound does not decide, and the product, which costs as much
+    // again, only where the norms of the inverse do not decide either. The bound
+    // from L decides 84% of the degree-4 fits of bunny00.off, 39% of camel.off's,
+    // 3% of cheese.off's (long thin fans); without it, fit_degree 4 took 6% more
+    // time on the 317 x 317 grid (1,995 against 1,879 ns per vertex, median of 8
+    // placements of the stack) and 4% to 5% more on bunny00 and armadillo.
+    if (own_norm_ * comparison_bound<unknowns>(factor_, inverse_diagonal_) <= max_condition)
       condition_pending_ = true;
     else {
-      condition_ = own_norm_ * inverse_one_norm<unknowns>(factor_);
-      if (!(condition_ <= max_condition))
-        return false;
+      alignas(16) double F[factor_size];
+      inverse_of_factor<unknowns>(factor_, inverse_diagonal_, F);
+      if (own_norm_ * triangular_norms_product<unknowns>(F) <= max_condition)
+        condition_pending_ = true;
+      else {
+        condition_ = own_norm_ * inverse_one_norm<unknowns>(F);
+        if (!(condition_ <= max_condition))
+          return false;
+      }
     }
     whitened_ = false;
-    solve_with(factor_);
+    solve_with_factor();
     return true;
   }
 
@@ -396,9 +409,12 @@ public:
     samples([&](const Point& x, double height, double weight) { accumulate<0>(W * x, height, weight); });
 
     alignas(16) double whitened_factor[factor_size];
-    if (!inverse_factor<tested>(whitened_factor))
+    double whitened_inverse_diagonal[tested];
+    if (!cholesky_factor<tested>(whitened_factor, whitened_inverse_diagonal))
       return false;
-    whitened_condition_ = one_norm<tested>() * inverse_one_norm<tested>(whitened_factor);
+    alignas(16) double F[factor_size];
+    inverse_of_factor<tested>(whitened_factor, whitened_inverse_diagonal, F);
+    whitened_condition_ = one_norm<tested>() * inverse_one_norm<tested>(F);
     if (!(whitened_condition_ <= max_condition))
       return false;
     if (condition_pending_) {  // test (a)'s factor is about to be replaced
@@ -406,18 +422,19 @@ public:
       condition_pending_ = false;
     }
     // The fit's own block is a leading block of N_y, its Cholesky factor the
-    // leading block of N_y's, and so is the inverse of that factor: a prefix.
+    // leading block of N_y's: a prefix of each column.
     std::copy(whitened_factor, whitened_factor + factor_size, factor_);
+    std::copy(whitened_inverse_diagonal, whitened_inverse_diagonal + tested, inverse_diagonal_);
     whitened_ = true;
     whitening_ = W;
-    solve_with(factor_);
+    solve_with_factor();
     map_back();
     return true;
   }
 
   // The fit again after an accepted solve or solve_whitened, on the same samples
   // with other heights: `samples(add)` calls add(x, height, weight) for each (any
-  // order). Only the right-hand side is accumulated; the inverse is the last one.
+  // order). Only the right-hand side is accumulated; the factor is the last one.
   template <typename Samples>
   void solve_again(const Samples& samples)
   {
@@ -425,7 +442,7 @@ public:
     samples([&](const Point& x, double height, double weight) {
       add_heights(whitened_ ? Point(whitening_ * x) : x, weight * height);
     });
-    solve_with(factor_);
+    solve_with_factor();
     if (whitened_)
       map_back();
   }
@@ -433,7 +450,11 @@ public:
   // The condition numbers of tests (a) and (b) at the last solve and solve_whitened (infinity where not computed).
   double condition_number() const
   {
-    return condition_pending_ ? own_norm_ * inverse_one_norm<unknowns>(factor_) : condition_;
+    if (!condition_pending_)
+      return condition_;
+    alignas(16) double F[factor_size];
+    inverse_of_factor<unknowns>(factor_, inverse_diagonal_, F);
+    return own_norm_ * inverse_one_norm<unknowns>(F);
   }
   double whitened_condition_number() const { return whitened_condition_; }
   const Hessian& hessian() const { return hessian_; }
@@ -443,7 +464,7 @@ private:
   static constexpr double half_sqrt2 = 0.70710678118654752440;
   // The tables' entries of the normal matrix are packed: the lower triangle row by row.
   static constexpr int index(int i, int j) { return i >= j ? i * (i + 1) / 2 + j : j * (j + 1) / 2 + i; }
-  // The triangular factors (see inverse_factor) are stored by rows of an even
+  // The triangular factors (see cholesky_factor) are stored by rows of an even
   // length, so that the leading block of the own unknowns is that of the tested ones.
   static constexpr int factor_stride = (tested + 1) / 2 * 2;
   static constexpr int factor_size = factor_stride * tested;
@@ -461,37 +482,33 @@ private:
   // of their time. Measured on the 317 x 317 grid (best of 4 runs): fit_degree 3
   // 1,016 -> 965 ns per vertex, 4 2,365 -> 2,205; the default, whose fits of
   // degree 2 keep their few sums in registers, 568 -> 596, so it keeps the
-  // scalar products. (The factorisation is in pairs for every fit: see inverse_factor.)
+  // scalar products. (The factorisation is in pairs for every fit: see cholesky_factor.)
   static constexpr bool paired_products = Monomial_tables<D, FirstOrder, LastOrder>::paired;
   static_assert(Tables::tested == tested, "the tables' rows are the tested monomials");
   static constexpr Tables tables_{};
 
-  // The fit from the inverse F = L^-1 of the Cholesky factor of the fit's own
-  // block (N = L L^T): F^T (F rhs), the coefficients of the monomials (rhs: the
-  // sums of the heights times the monomials, scaled here, see add_heights).
-  void solve_with(const double (&F)[factor_size])
+  // The fit from the Cholesky factor L of the fit's own block (N = L L^T): L y =
+  // rhs, then L^T a = y, a the coefficients of the monomials (rhs: the sums of
+  // the heights times the monomials, scaled here, see add_heights).
+  void solve_with_factor()
   {
-    double scaled[unknowns];
-    CGAL_CURVATURE_ESTIMATION_UNROLL
-    for (int k = 0; k < unknowns; ++k)
-      scaled[k] = tables_.scale[k] * right_hand_side_[tables_.row_slot[k]];
     double reduced[unknowns];
     CGAL_CURVATURE_ESTIMATION_UNROLL
     for (int i = 0; i < unknowns; ++i) {
-      double value = 0;
+      double value = tables_.scale[i] * right_hand_side_[tables_.row_slot[i]];
       CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int k = 0; k <= i; ++k)
-        value += F[factor_index(i, k)] * scaled[k];
-      reduced[i] = value;
+      for (int k = 0; k < i; ++k)
+        value -= factor_[factor_index(k, i)] * reduced[k];
+      reduced[i] = value * inverse_diagonal_[i];
     }
     double coefficients[unknowns];
     CGAL_CURVATURE_ESTIMATION_UNROLL
-    for (int j = 0; j < unknowns; ++j) {
-      double value = 0;
+    for (int i = unknowns - 1; i >= 0; --i) {
+      double value = reduced[i];
       CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int i = j; i < unknowns; ++i)
-        value += F[factor_index(i, j)] * reduced[i];
-      coefficients[j] = value;
+      for (int k = i + 1; k < unknowns; ++k)
+        value -= factor_[factor_index(i, k)] * coefficients[k];
+      coefficients[i] = value * inverse_diagonal_[i];
     }
     set_coefficients(coefficients);
   }
@@ -721,40 +738,35 @@ private:
     return largest;
   }
 
-  // F = L^-1 for the Cholesky factor L of the leading n x n block of the normal
-  // matrix (N = L L^T, so N^-1 = F^T F), lower triangular, in the rows
-  // of `factor_stride` (zero above the diagonal up to the row's last pair); false
-  // if the block is not positive definite. Both steps work on aligned pairs of
-  // entries, in plain loops over fixed sizes (the compiler unrolls them; Eigen's
-  // small triangular solves are several times slower), and each entry is the
-  // same chain of operations as in the textbook loops, in the same order:
-  // - L column by column (the dot products of row i and row j of L, for all i
-  //   of column j at once: pairs of rows);
-  // - F row by row (row i of F is e_i minus the rows of F above it times the
-  //   entries of row i of L, divided by L_ii: pairs of columns), so that a row
-  //   is summed in registers and written once.
+  // The Cholesky factor L of the leading n x n block of the normal matrix (N = L
+  // L^T), lower triangular, stored by columns (L_ij at factor_index(j, i), zero
+  // above the diagonal up to the column's last pair), and the inverses of its
+  // diagonal; false if the block is not positive definite. Column by column, the
+  // dot products of row i and row j of L for all i of column j at once, in
+  // aligned pairs of rows, in plain loops over fixed sizes (the compiler unrolls
+  // them; Eigen's small triangular solves are several times slower); each entry
+  // is the same chain of operations as in the textbook loop, in the same order.
   // The entries of N are computed from the moments where they are needed: a
   // matrix written entry by entry and read in pairs stalls the reads (store
-  // forwarding). Measured against the scalar loops on the 317 x 317 grid (median
-  // over 16 placements of the stack): fit_degree 4 2,196 -> 1,987 ns per vertex,
-  // 3 978 -> 958; the default's small fits 572 -> 582.
+  // forwarding). Measured against the scalar loops (with the inverse of L, then
+  // computed in every solve) on the 317 x 317 grid (median over 16 placements of
+  // the stack): fit_degree 4 2,196 -> 1,987 ns per vertex, 3 978 -> 958; the
+  // default's small fits 572 -> 582.
   template <int n>
-  bool inverse_factor(double (&F)[factor_size]) const
+  bool cholesky_factor(double (&L)[factor_size], double (&inverse_diagonal)[tested]) const
   {
-    static_assert(n <= factor_stride, "array too small");
+    static_assert(n <= tested, "array too small");
     constexpr int pairs = (n + 1) / 2;
-    alignas(16) double L[pairs * 2 * n];  // column j of L from L + 2 pairs j, its diagonal apart
-    double inverse_diagonal[n];
     CGAL_CURVATURE_ESTIMATION_UNROLL
     for (int j = 0; j < n; ++j) {
-      double* column = L + 2 * pairs * j;
+      double* column = L + factor_stride * j;
       CGAL_CURVATURE_ESTIMATION_UNROLL
       for (int p = j / 2; p < pairs; ++p) {
         const int i = 2 * p;  // rows i and i + 1 (row j - 1 or n: unused, any finite number)
         Pair value(normal_entry(i, j), normal_entry(i + 1 < n ? i + 1 : i, j));
         CGAL_CURVATURE_ESTIMATION_UNROLL
         for (int k = 0; k < j; ++k)
-          value -= pair_at(L + 2 * pairs * k + i) * L[2 * pairs * k + j];
+          value -= pair_at(L + factor_stride * k + i) * L[factor_index(k, j)];
         pair_at(column + i) = value;
       }
       const double diagonal = column[j];
@@ -765,6 +777,19 @@ private:
       for (int p = j / 2; p < pairs; ++p)
         pair_at(column + 2 * p) *= inverse_diagonal[j];
     }
+    return true;
+  }
+
+  // F = L^-1 for L from cholesky_factor<n> (so that N^-1 = F^T F), lower
+  // triangular, stored by rows (F_ij at factor_index(i, j), zero above the
+  // diagonal up to the row's last pair): row i of F is e_i minus the rows of F
+  // above it times the entries of row i of L, divided by L_ii, in aligned pairs
+  // of columns, so that a row is summed in registers and written once.
+  template <int n>
+  static void inverse_of_factor(const double (&L)[factor_size], const double (&inverse_diagonal)[tested],
+                                double (&F)[factor_size])
+  {
+    constexpr int pairs = (n + 1) / 2;
     CGAL_CURVATURE_ESTIMATION_UNROLL
     for (int i = 0; i < n; ++i) {
       Pair row[pairs];
@@ -773,7 +798,7 @@ private:
         row[p] = Pair(2 * p == i ? 1.0 : 0.0, 2 * p + 1 == i ? 1.0 : 0.0);
       CGAL_CURVATURE_ESTIMATION_UNROLL
       for (int k = 0; k < i; ++k) {
-        const double entry = L[2 * pairs * k + i];
+        const double entry = L[factor_index(k, i)];
         CGAL_CURVATURE_ESTIMATION_UNROLL
         for (int p = 0; p <= k / 2; ++p)
           row[p] -= pair_at(F + factor_stride * k + 2 * p) * entry;
@@ -782,10 +807,42 @@ private:
       for (int p = 0; p <= i / 2; ++p)
         pair_at(F + factor_stride * i + 2 * p) = row[p] * inverse_diagonal[i];
     }
-    return true;
   }
 
-  // ||F^T F||_1 for a lower triangular n x n F (see inverse_factor): the 1-norm of N^-1.
+  // A bound of ||L^-1||_1 ||L^-1||_inf, hence of ||N^-1||_1, from L (cholesky_factor<n>)
+  // alone, at the cost of two triangular solves: the comparison matrix M of L
+  // (|L_ij| on the diagonal, -|L_ij| below it) has M^-1 >= |L^-1| entrywise, so
+  // ||L^-1||_inf <= max_i (M^-1 e)_i and ||L^-1||_1 <= max_i (M^-T e)_i, e = (1, ..., 1)
+  // (Higham, Accuracy and Stability of Numerical Algorithms, section 8.3).
+  template <int n>
+  static double comparison_bound(const double (&L)[factor_size], const double (&inverse_diagonal)[tested])
+  {
+    double forward[n];
+    double largest_forward = 0;
+    CGAL_CURVATURE_ESTIMATION_UNROLL
+    for (int i = 0; i < n; ++i) {
+      double value = 1;
+      CGAL_CURVATURE_ESTIMATION_UNROLL
+      for (int k = 0; k < i; ++k)
+        value += std::abs(L[factor_index(k, i)]) * forward[k];
+      forward[i] = value * inverse_diagonal[i];
+      largest_forward = forward[i] > largest_forward ? forward[i] : largest_forward;
+    }
+    double backward[n];
+    double largest_backward = 0;
+    CGAL_CURVATURE_ESTIMATION_UNROLL
+    for (int i = n - 1; i >= 0; --i) {
+      double value = 1;
+      CGAL_CURVATURE_ESTIMATION_UNROLL
+      for (int k = i + 1; k < n; ++k)
+        value += std::abs(L[factor_index(i, k)]) * backward[k];
+      backward[i] = value * inverse_diagonal[i];
+      largest_backward = backward[i] > largest_backward ? backward[i] : largest_backward;
+    }
+    return largest_forward * largest_backward;
+  }
+
+  // ||F^T F||_1 for a lower triangular n x n F (see inverse_of_factor): the 1-norm of N^-1.
   template <int n>
   static double inverse_one_norm(const double (&F)[factor_size])
   {
@@ -805,7 +862,7 @@ private:
     return *std::max_element(column_sums, column_sums + n);
   }
 
-  // ||F||_1 ||F||_inf for a lower triangular n x n F (see inverse_factor): a bound of ||F^T F||_1.
+  // ||F||_1 ||F||_inf for a lower triangular n x n F (see inverse_of_factor): a bound of ||F^T F||_1.
   template <int n>
   static double triangular_norms_product(const double (&F)[factor_size])
   {
@@ -829,9 +886,11 @@ private:
   alignas(16) double moments_[Tables::moments()];
   // From the moments: solve fills the own block, a prefix; solve_whitened all of it.
   alignas(16) double right_hand_side_[unknowns];
-  // F = L^-1 for the own block N = L L^T (see inverse_factor), at the last
-  // accepted solve or solve_whitened, and the own block's 1-norm at the last solve.
+  // The Cholesky factor L of the own block N = L L^T and the inverses of its
+  // diagonal (see cholesky_factor), at the last accepted solve or solve_whitened,
+  // and the own block's 1-norm at the last solve.
   alignas(16) double factor_[factor_size];
+  double inverse_diagonal_[tested];
   double own_norm_ = 0;
   // Whether the last solve accepted by the bound of the condition number, which
   // condition_number() then replaces by the number itself.
