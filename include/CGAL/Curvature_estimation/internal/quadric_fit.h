@@ -464,8 +464,9 @@ private:
   static constexpr double half_sqrt2 = 0.70710678118654752440;
   // The tables' entries of the normal matrix are packed: the lower triangle row by row.
   static constexpr int index(int i, int j) { return i >= j ? i * (i + 1) / 2 + j : j * (j + 1) / 2 + i; }
-  // The triangular factors (see cholesky_factor) are stored by rows of an even
-  // length, so that the leading block of the own unknowns is that of the tested ones.
+  // The triangular factors (L by columns, see cholesky_factor; its inverse by
+  // rows) are stored in lines of an even length, so that the leading block of the
+  // own unknowns is that of the tested ones.
   static constexpr int factor_stride = (tested + 1) / 2 * 2;
   static constexpr int factor_size = factor_stride * tested;
   static constexpr int factor_index(int i, int j) { return factor_stride * i + j; }
@@ -739,13 +740,14 @@ private:
   }
 
   // The Cholesky factor L of the leading n x n block of the normal matrix (N = L
-  // L^T), lower triangular, stored by columns (L_ij at factor_index(j, i), zero
-  // above the diagonal up to the column's last pair), and the inverses of its
-  // diagonal; false if the block is not positive definite. Column by column, the
-  // dot products of row i and row j of L for all i of column j at once, in
-  // aligned pairs of rows, in plain loops over fixed sizes (the compiler unrolls
-  // them; Eigen's small triangular solves are several times slower); each entry
-  // is the same chain of operations as in the textbook loop, in the same order.
+  // L^T), lower triangular, stored by columns (L_ij at factor_index(j, i); above
+  // the diagonal, in the column's first pair, any finite number), and the
+  // inverses of its diagonal; false if the block is not positive definite.
+  // Column by column, the dot products of row i and row j of L for all i of
+  // column j at once, in aligned pairs of rows, in plain loops over fixed sizes
+  // (the compiler unrolls them; Eigen's small triangular solves are several
+  // times slower); each entry is the same chain of operations as in the textbook
+  // loop, in the same order.
   // The entries of N are computed from the moments where they are needed: a
   // matrix written entry by entry and read in pairs stalls the reads (store
   // forwarding). Measured against the scalar loops (with the inverse of L, then
