@@ -493,25 +493,46 @@ private:
   // the heights times the monomials, scaled here, see add_heights).
   void solve_with_factor()
   {
-    double reduced[unknowns];
+    double scaled[unknowns];
     CGAL_CURVATURE_ESTIMATION_UNROLL
-    for (int i = 0; i < unknowns; ++i) {
-      double value = tables_.scale[i] * right_hand_side_[tables_.row_slot[i]];
+    for (int i = 0; i < unknowns; ++i)
+      scaled[i] = tables_.scale[i] * right_hand_side_[tables_.row_slot[i]];
+    const auto entry = [](double value) { return value; };
+    double reduced[unknowns];
+    forward_substitution<unknowns>(factor_, inverse_diagonal_, scaled, entry, reduced);
+    double coefficients[unknowns];
+    backward_substitution<unknowns>(factor_, inverse_diagonal_, reduced, entry, coefficients);
+    set_coefficients(coefficients);
+  }
+
+  // Solutions of T y = b for T = L (forward) and T = L^T (backward), L from
+  // cholesky_factor<n>, with the entries of T off its diagonal read through
+  // `entry`: the solve reads them as they are, comparison_bound as -|L_ij|.
+  template <int n, typename Entry>
+  static void forward_substitution(const double (&L)[factor_size], const double (&inverse_diagonal)[tested],
+                                   const double (&b)[n], Entry entry, double (&y)[n])
+  {
+    CGAL_CURVATURE_ESTIMATION_UNROLL
+    for (int i = 0; i < n; ++i) {
+      double value = b[i];
       CGAL_CURVATURE_ESTIMATION_UNROLL
       for (int k = 0; k < i; ++k)
-        value -= factor_[factor_index(k, i)] * reduced[k];
-      reduced[i] = value * inverse_diagonal_[i];
+        value -= entry(L[factor_index(k, i)]) * y[k];
+      y[i] = value * inverse_diagonal[i];
     }
-    double coefficients[unknowns];
+  }
+  template <int n, typename Entry>
+  static void backward_substitution(const double (&L)[factor_size], const double (&inverse_diagonal)[tested],
+                                    const double (&b)[n], Entry entry, double (&y)[n])
+  {
     CGAL_CURVATURE_ESTIMATION_UNROLL
-    for (int i = unknowns - 1; i >= 0; --i) {
-      double value = reduced[i];
+    for (int i = n - 1; i >= 0; --i) {
+      double value = b[i];
       CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int k = i + 1; k < unknowns; ++k)
-        value -= factor_[factor_index(i, k)] * coefficients[k];
-      coefficients[i] = value * inverse_diagonal_[i];
+      for (int k = i + 1; k < n; ++k)
+        value -= entry(L[factor_index(i, k)]) * y[k];
+      y[i] = value * inverse_diagonal[i];
     }
-    set_coefficients(coefficients);
   }
 
   // The Hessian and gradient from the coefficients of the monomials of x.
@@ -819,29 +840,14 @@ private:
   template <int n>
   static double comparison_bound(const double (&L)[factor_size], const double (&inverse_diagonal)[tested])
   {
+    double ones[n];
+    std::fill(ones, ones + n, 1.0);
+    const auto entry = [](double value) { return -std::abs(value); };
     double forward[n];
-    double largest_forward = 0;
-    CGAL_CURVATURE_ESTIMATION_UNROLL
-    for (int i = 0; i < n; ++i) {
-      double value = 1;
-      CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int k = 0; k < i; ++k)
-        value += std::abs(L[factor_index(k, i)]) * forward[k];
-      forward[i] = value * inverse_diagonal[i];
-      largest_forward = forward[i] > largest_forward ? forward[i] : largest_forward;
-    }
+    forward_substitution<n>(L, inverse_diagonal, ones, entry, forward);
     double backward[n];
-    double largest_backward = 0;
-    CGAL_CURVATURE_ESTIMATION_UNROLL
-    for (int i = n - 1; i >= 0; --i) {
-      double value = 1;
-      CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int k = i + 1; k < n; ++k)
-        value += std::abs(L[factor_index(i, k)]) * backward[k];
-      backward[i] = value * inverse_diagonal[i];
-      largest_backward = backward[i] > largest_backward ? backward[i] : largest_backward;
-    }
-    return largest_forward * largest_backward;
+    backward_substitution<n>(L, inverse_diagonal, ones, entry, backward);
+    return *std::max_element(forward, forward + n) * *std::max_element(backward, backward + n);
   }
 
   // ||F^T F||_1 for a lower triangular n x n F (see inverse_of_factor): the 1-norm of N^-1.
