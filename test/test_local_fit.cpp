@@ -3,7 +3,7 @@
 // exact inputs and without any mesh:
 //   internal/tangent_frame.h   tangent_basis<N>
 //   internal/quadric_fit.h     Taylor_fit<D, FirstOrder, LastOrder>, both conditioning tests,
-//                              solve_again, curvature_quartic
+//                              solve_again, subtract_curvature_quartic, curvature_quartic
 //   internal/shape_operator.h  graph_curvature<N>
 //
 // Every expected value is computed here from the mathematics of the input
@@ -1577,6 +1577,55 @@ TEST(SolveAgain, IsTheFitOfTheOtherHeightsInScaledAndWhitenedCoordinates)
 {
   Random random(91);
   for_each_fit([&](auto orders) { check_solve_again(random, orders); });
+}
+
+// subtract_curvature_quartic, from the moments, gives the fit of the heights less
+// curvature_quartic(C, x) (C the first fit's Hessian), accumulated sample by
+// sample, after test (a) (a round stencil) and after test (b) only (one
+// stretched by 100), where the moments are those of the whitened coordinates.
+template <int D, int F, int L>
+void check_subtract_curvature_quartic(Random& random, Orders<D, F, L>)
+{
+  using Fit = CEI::Taylor_fit<D, F, L>;
+  if constexpr (Fit::quartic_moments) {
+    const double max_condition = 1e6;
+    // Test (a) alone accepts a round stencil, test (b) alone one stretched by 100.
+    const auto solve = [&](Fit& fit, const Samples<D>& samples, double stretch) {
+      samples([&](const Vec<D>& x, double h, double w) { fit.add(x, h, w); });
+      if (stretch == 1.0)
+        return fit.solve(max_condition);
+      return !fit.solve(max_condition) && fit.solve_whitened(max_condition, samples);
+    };
+    for (int trial = 0; trial < 10; ++trial)
+      for (const double stretch : {1.0, 100.0}) {
+        const std::vector<Vec<D>> xs =
+          mapped<D>(spread_stencil<D>(random, 2 * Fit::tested + trial % 6), stretch_map<D>(random, stretch));
+        Samples<D> samples;
+        for (const Vec<D>& x : xs)
+          samples.push(x, random.uniform(-1, 1));
+        Fit fit;
+        ASSERT_TRUE(solve(fit, samples, stretch)) << "trial " << trial << ", stretch " << stretch;
+        const Mat<D, D> first_hessian = fit.hessian();
+        Samples<D> corrected;
+        for (std::size_t i = 0; i < xs.size(); ++i)
+          corrected.push(xs[i], samples.height[i] - CEI::curvature_quartic<D>(first_hessian, xs[i]));
+        Fit fresh;
+        ASSERT_TRUE(solve(fresh, corrected, stretch)) << "trial " << trial << ", stretch " << stretch;
+        fit.subtract_curvature_quartic();
+        const double size = (std::max)(fresh.hessian().cwiseAbs().maxCoeff(), fresh.gradient().cwiseAbs().maxCoeff());
+        const double difference = (std::max)((fit.hessian() - fresh.hessian()).cwiseAbs().maxCoeff(),
+                                             (fit.gradient() - fresh.gradient()).cwiseAbs().maxCoeff()) / size;
+        EXPECT_LE(difference, 1e-12) << "trial " << trial << ", stretch " << stretch;
+        // The correction changes the fit: the test could tell.
+        EXPECT_GT((first_hessian - fresh.hessian()).cwiseAbs().maxCoeff(), 1e-3 * size) << "trial " << trial;
+      }
+  }
+}
+
+TEST(SubtractCurvatureQuartic, IsTheFitOfTheHeightsLessTheQuarticTermInScaledAndWhitenedCoordinates)
+{
+  Random random(93);
+  for_each_fit([&](auto orders) { check_subtract_curvature_quartic(random, orders); });
 }
 
 // The height over the tangent space of a sphere of radius r (k = D) or of a

@@ -602,11 +602,15 @@ private:
 
   // The estimate from an accepted fit over `rings` rings (status widened where
   // that is more than `asked`); on surfaces, a fit with linear terms and no
-  // quartic ones is first solved again without the curvature's quartic term.
+  // quartic ones is first solved again without the curvature's quartic term:
+  // from its moments where they reach the degree that takes (quadric_fit.h),
+  // else sample by sample.
   template <typename Fit>
   Estimate curvature_estimate(const Vector& normal, const Tangents& tangents, int rings, int asked, Fit& fit) const
   {
-    if constexpr (D == 2 && Fit::linear_terms && Fit::last_order < 4) {
+    if constexpr (Fit::quartic_moments)
+      fit.subtract_curvature_quartic();
+    else if constexpr (D == 2 && Fit::linear_terms && Fit::last_order < 4) {
       const Eigen::Matrix<double, D, D> first_hessian = fit.hessian();
       fit.solve_again([&](const auto& add) {
         for_each_sample<Fit>(normal, tangents, rings, [&](const auto& x, double height, double weight) {
