@@ -148,6 +148,7 @@ enum class Ball_estimator
   paraboloid,     // paraboloid_fitting_curvatures, default fit_degree (2)
   paraboloid_d3,  // ... fit_degree(3)
   jet_d2,         // jet_fitting_curvatures, jet_degree(2)
+  gauss_map,      // gauss_map_curvatures
 #if CGAL_VERSION_MAJOR >= 6
   icc,            // CGAL::Polygon_mesh_processing::interpolated_corrected_curvatures
 #endif
@@ -165,6 +166,7 @@ inline const std::vector<Ball_estimator_info>& ball_estimators()
     {Ball_estimator::paraboloid, "paraboloid_ball"},
     {Ball_estimator::paraboloid_d3, "paraboloid_d3_ball"},
     {Ball_estimator::jet_d2, "jet_d2_ball"},
+    {Ball_estimator::gauss_map, "gauss_map_ball"},
 #if CGAL_VERSION_MAJOR >= 6
     {Ball_estimator::icc, "icc_ball"},
 #endif
@@ -186,6 +188,9 @@ void run_in_ball(Ball_estimator e, const Mesh& mesh, double radius, const NamedP
       return;
     case Ball_estimator::jet_d2:
       CE::jet_fitting_curvatures<ConcurrencyTag>(mesh, np.ball_radius(radius).jet_degree(2));
+      return;
+    case Ball_estimator::gauss_map:
+      CE::gauss_map_curvatures<ConcurrencyTag>(mesh, np.ball_radius(radius));
       return;
 #if CGAL_VERSION_MAJOR >= 6
     case Ball_estimator::icc:

@@ -751,6 +751,7 @@ BALL_ESTIMATORS = [
     ("paraboloid_ball", "paraboloid, fit degree 2", "paraboloid_ball_4h"),
     ("paraboloid_d3_ball", "paraboloid, fit degree 3", "paraboloid_d3"),
     ("jet_d2_ball", "jet fitting d=2", "jet_d2_2rings"),
+    ("gauss_map_ball", "Gauss map", "gauss_map"),
     ("icc_ball", "ICC", "icc_ball_2h"),
 ]
 # The references of the noise section, over their usual neighborhoods (no radius).
@@ -817,10 +818,12 @@ def noise_section(accuracy_dir, figures):
                  "Gaussian noise of σ = 7%% of the mean edge length in each coordinate; the exact curvature is "
                  "that of the points before the noise. Seeds %s. The radius r of the ball is in mean edge lengths h of "
                  "the noisy mesh (`CGAL::Curvature_estimation::mean_edge_length`; seed %d: σ = %.3g, h = %.3g): "
-                 "`ball_radius(r)` of `paraboloid_fitting_curvatures` with fit degree 2 and 3 and of "
-                 "`jet_fitting_curvatures` (CGAL's jet fitting of degree 2)%s. Our fits and jet fitting take the "
-                 "connected part of the mesh in the ball, and widen a ball that holds fewer than twice the fit's "
-                 "unknowns. For reference, the default paraboloid fit and the Gauss map on their usual neighborhoods. "
+                 "`ball_radius(r)` of `paraboloid_fitting_curvatures` with fit degree 2 and 3, of "
+                 "`jet_fitting_curvatures` (CGAL's jet fitting of degree 2) and of `gauss_map_curvatures`%s. Ours "
+                 "and jet fitting take the connected part of the mesh in the ball, and widen a ball that holds "
+                 "fewer than twice the fit's unknowns. The Gauss map differentiates normals that are fitted over "
+                 "balls of the same radius about each vertex of its ball: its data reach twice the radius. "
+                 "For reference, the default paraboloid fit and the Gauss map on their usual neighborhoods. "
                  "Every vertex counts; one thread."
                  % ("{:,}".format(first["vertices"]), ", ".join(str(s) for s in seeds), first["seed"], first["sigma"],
                     first["h"], ", and `ball_radius(r)` of CGAL 6's interpolated corrected curvatures (ICC)"
@@ -860,7 +863,8 @@ def noise_section(accuracy_dir, figures):
               "normal leaves in the coefficient of |x|²/2 of a least-squares fit over N samples uniform in a disc "
               "of radius r, √48 σ / (√N r²), with N the mean number of vertices in the ball (above): while the noise "
               "dominates, a fit over the ball cannot do better, and the error falls as r⁻³. It does not apply where "
-              "the balls are widened (see below): those fits have more samples than N. Once the ball is large, the "
+              "the balls are widened (see below): those fits have more samples than N; nor to the Gauss map, "
+              "whose data reach twice the radius. Once the ball is large, the "
               "shape's own variation over it takes over, and the error grows again.", ""]
 
     lines += ["### Time per vertex (ns, one thread, mean over the seeds) and widened vertices", ""]

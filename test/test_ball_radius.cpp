@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Curvature at a chosen scale: `ball_radius` for paraboloid_fitting_curvatures() (every fit_degree)
-// and jet_fitting_curvatures(), and mean_edge_length(). The ball is the connected part of the mesh
+// Curvature at a chosen scale: `ball_radius` for paraboloid_fitting_curvatures() (every fit_degree),
+// jet_fitting_curvatures() and gauss_map_curvatures(), and mean_edge_length(). The ball is the connected part of the mesh
 // in it (a folded strip, whose other sheet is inside the ball but not joined to the vertex inside
 // it); on noisy meshes (the noise family of test/common/noisy_meshes.h) the error falls with the
 // radius, and at a radius of 4 edges is no worse than CGAL's jet fitting on the same ball; on
@@ -54,6 +54,12 @@ Estimates paraboloid_in_ball(const Mesh& mesh, double radius, int degree)
   return ce_test::run_with_all_outputs<Kernel>(
     mesh, [](const Mesh& m, const auto& np) { CE::paraboloid_fitting_curvatures(m, np); },
     params::ball_radius(radius).fit_degree(degree));
+}
+
+Estimates gauss_map_in_ball(const Mesh& mesh, double radius)
+{
+  return ce_test::run_with_all_outputs<Kernel>(
+    mesh, [](const Mesh& m, const auto& np) { CE::gauss_map_curvatures(m, np); }, params::ball_radius(radius));
 }
 
 Estimates jet_in_ball(const Mesh& mesh, double radius)
@@ -224,6 +230,36 @@ TEST(BallRadius, NoiseErrorFallsWithTheRadius)
   }
 }
 
+// The Gauss map over a ball differentiates normals that are themselves fitted over balls of the
+// same radius (the quadric_fit normal in a ball), so its neighborhood reaches about twice the radius:
+// its noise error at r is about the fit's at 2 r (measured on the 10,242-vertex ellipsoid, seed 1:
+// 0.236, 0.065, 0.034 at 2, 3, 4 edges; the fit 0.119, 0.040, 0.035 at 4, 6, 8). Asserted as for
+// the fit: no refusal, no ball of 2 to 4 edges grows (most of 1 edge do), the error falls
+// with the radius and at least as r^-2 from 2 to 4 edges.
+TEST(BallRadius, GaussMapNoiseErrorFallsWithTheRadius)
+{
+  const Noisy_ellipsoid e = noisy_ellipsoid(5, 1);
+  double previous = std::numeric_limits<double>::infinity(), at_2 = 0, at_4 = 0;
+  for (const double edges : {1.0, 2.0, 3.0, 4.0}) {
+    const Estimates estimates = gauss_map_in_ball(e.mesh, edges * e.h);
+    const double rms = H_rms(estimates, e.exact);
+    const std::size_t widened = count_status(estimates, CE::Estimation_status::widened);
+    std::printf("noisy ellipsoid, Gauss map, radius %.0f edges: H RMS %.4f, widened %zu of %zu\n", edges, rms, widened,
+                estimates.status.size());
+    EXPECT_LT(rms, previous) << edges << " edges";
+    EXPECT_EQ(count_status(estimates, CE::Estimation_status::not_estimable), 0u);
+    if (edges >= 2) {
+      EXPECT_EQ(widened, 0u) << edges << " edges";
+    }
+    previous = rms;
+    if (edges == 2)
+      at_2 = rms;
+    if (edges == 4)
+      at_4 = rms;
+  }
+  EXPECT_GE(at_2 / at_4, 4);
+}
+
 // At a radius of 4 edges, on three seeds: every vertex finite, and the H RMS no worse than CGAL's
 // jet fitting of degree 2 on the same ball.
 TEST(BallRadius, NoWorseThanJetFittingOnTheSameBall)
@@ -244,19 +280,20 @@ TEST(BallRadius, NoWorseThanJetFittingOnTheSameBall)
 // Delaunay meshes of random points. A fit of degree d over a ball is of order d - 1 there: the
 // terms of degree d + 1 leak into the curvature through the uneven ball, as the cubic terms do into
 // a degree-2 fit (measured between the two finest levels: 1.19 to 1.33, 1.86 to 2.12, 2.38 to 2.91).
+// The Gauss map over the ball is of order 1 (its normals' O(r^2) errors divided by r): 1.16 and 1.56.
 TEST(BallRadius, NoiseFreeMeshesConvergeAtAFixedNumberOfEdges)
 {
   const std::vector<ce_test::Graph_function> functions = ce_test::hamann_table1_functions();
-  const double min_order[] = {0, 0, 0.8, 1.6, 2.2};  // by degree
+  const double min_order[] = {0.8, 0, 0.8, 1.6, 2.2};  // by degree
   for (const std::size_t f : {5, 8})  // monkey saddle, trigonometric
-    for (const int degree : {2, 3, 4}) {
+    for (const int degree : {0, 2, 3, 4}) {  // 0: the Gauss map
       ce_test::Convergence H;
       std::optional<double> order;
       for (const std::size_t points : {1000, 4000, 16000}) {
         const ce_test::Soup soup = ce_test::delaunay_graph_soup(functions[f], points, -1, 1, 1);
         const Mesh mesh = ce_test::to_mesh<Mesh>(soup);
         const double h = ce_test::mean_edge_length(soup);
-        const Estimates e = paraboloid_in_ball(mesh, 4 * h, degree);
+        const Estimates e = degree == 0 ? gauss_map_in_ball(mesh, 4 * h) : paraboloid_in_ball(mesh, 4 * h, degree);
         // Interior: the ball of 4 edges (and its growth) away from the square's border.
         const double margin = 8 * h;
         const ce_test::Curvature_errors t = ce_test::curvature_errors(e, ce_test::graph_curvatures(functions[f], soup),
@@ -265,8 +302,9 @@ TEST(BallRadius, NoiseFreeMeshesConvergeAtAFixedNumberOfEdges)
             return std::abs(xy.x()) < 1 - margin && std::abs(xy.y()) < 1 - margin;
           });
         order = H.add(h, t.mean.stats().rms);
-        std::printf("%s Delaunay, fit_degree %d, radius 4 edges, h %.4f: interior H RMS %.3e max %.3e",
-                    functions[f].name.c_str(), degree, h, t.mean.stats().rms, t.mean.stats().max);
+        const std::string estimator = degree == 0 ? "Gauss map" : "fit_degree " + std::to_string(degree);
+        std::printf("%s Delaunay, %s, radius 4 edges, h %.4f: interior H RMS %.3e max %.3e",
+                    functions[f].name.c_str(), estimator.c_str(), h, t.mean.stats().rms, t.mean.stats().max);
         if (order)
           std::printf(", order %.2f", *order);
         std::printf("\n");
@@ -284,14 +322,17 @@ TEST(BallRadius, PolyhedronGivesTheSameEstimatesAsSurfaceMesh)
   const Mesh mesh = ce_test::to_mesh<Mesh>(soup);
   const Polyhedron polyhedron = ce_test::to_mesh<Polyhedron>(soup);
   const double radius = 3 * CE::mean_edge_length(mesh);
-  for (const int degree : {2, 4}) {
-    const Estimates expected = paraboloid_in_ball(mesh, radius, degree);
+  for (const int degree : {0, 2, 4}) {  // 0: the Gauss map
+    const Estimates expected = degree == 0 ? gauss_map_in_ball(mesh, radius) : paraboloid_in_ball(mesh, radius, degree);
     std::map<Polyhedron::Vertex_const_handle, double> H;
     std::map<Polyhedron::Vertex_const_handle, CE::Estimation_status> status;
-    CE::paraboloid_fitting_curvatures(polyhedron, params::ball_radius(radius)
-                                                    .fit_degree(degree)
-                                                    .vertex_mean_curvature_map(boost::make_assoc_property_map(H))
-                                                    .vertex_estimation_status_map(boost::make_assoc_property_map(status)));
+    const auto np = params::ball_radius(radius)
+                      .vertex_mean_curvature_map(boost::make_assoc_property_map(H))
+                      .vertex_estimation_status_map(boost::make_assoc_property_map(status));
+    if (degree == 0)
+      CE::gauss_map_curvatures(polyhedron, np);
+    else
+      CE::paraboloid_fitting_curvatures(polyhedron, np.fit_degree(degree));
     std::size_t i = 0;
     for (auto v = polyhedron.vertices_begin(); v != polyhedron.vertices_end(); ++v, ++i) {
       EXPECT_NEAR(H[v], expected.mean[i], 1e-12 * (1 + std::abs(expected.mean[i]))) << "degree " << degree << ", vertex " << i;
@@ -332,7 +373,12 @@ TEST(BallRadius, OutOfRangeIsRefused)
   for (const double radius : {0.0, -1.0, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()}) {
     EXPECT_THROW(CE::paraboloid_fitting_curvatures(mesh, params::ball_radius(radius)), std::invalid_argument);
     EXPECT_THROW(CE::jet_fitting_curvatures(mesh, params::ball_radius(radius)), std::invalid_argument);
+    EXPECT_THROW(CE::gauss_map_curvatures(mesh, params::ball_radius(radius)), std::invalid_argument);
   }
+  // The Gauss map's ball is for its least-squares differential, not the per-face Jacobians.
+  EXPECT_THROW(CE::gauss_map_curvatures(
+                 mesh, params::ball_radius(0.5).neighbor_weighting(CE::Neighbor_weighting::centroid)),
+               std::invalid_argument);
   // The ball's weights need a ball, and are uniform or smooth; smooth is for the ball fits only.
   EXPECT_THROW(CE::paraboloid_fitting_curvatures(mesh, params::neighbor_weighting(CE::Neighbor_weighting::smooth)),
                std::invalid_argument);

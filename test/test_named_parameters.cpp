@@ -600,20 +600,20 @@ TEST(NamedParameters, OutOfRangeParametersThrow)
 
 // CGAL 6's ball_radius (radius neighborhoods) is refused, with or without output maps,
 // rather than ignored, by the estimators that do not take it; those that do (the
-// paraboloid fits, jet fitting, the quadric_fit normals: see test_ball_radius) refuse
-// a radius that is not positive and finite.
+// paraboloid fits, jet fitting, the Gauss map, the quadric_fit normals: see
+// test_ball_radius) refuse a radius that is not positive and finite.
 TEST(NamedParameters, BallRadiusIsRefusedWhereNotTaken)
 {
   Mesh mesh = jittered_paraboloid_grid();
   Outputs out(mesh);
   const auto np = CE::parameters::vertex_mean_curvature_map(out.mean).ball_radius(0.5);
   EXPECT_THROW(CE::curve_network_curvatures(mesh, np), std::invalid_argument);
-  EXPECT_THROW(CE::gauss_map_curvatures(mesh, np), std::invalid_argument);
   EXPECT_THROW(CE::taubin_curvatures(mesh, np), std::invalid_argument);
   EXPECT_THROW(CE::chen_schmitt_curvatures(mesh, np), std::invalid_argument);
   const auto negative = CE::parameters::vertex_mean_curvature_map(out.mean).ball_radius(-0.5);
   EXPECT_THROW(CE::paraboloid_fitting_curvatures(mesh, negative), std::invalid_argument);
   EXPECT_THROW(CE::jet_fitting_curvatures(mesh, negative), std::invalid_argument);
+  EXPECT_THROW(CE::gauss_map_curvatures(mesh, negative), std::invalid_argument);
   auto normals = mesh.add_property_map<vertex_descriptor, Vector>("v:test_normal").first;
   EXPECT_THROW(CE::estimate_vertex_normals(mesh, normals, CE::parameters::ball_radius(0.0)), std::invalid_argument);
   for (vertex_descriptor v : vertices(mesh))
@@ -695,7 +695,8 @@ TEST(NamedParameters, OneChainServesCgalInterpolatedCorrectedCurvatures)
   check("paraboloid_fitting_curvatures, ball_radius", 0.01);
   CE::jet_fitting_curvatures(mesh, np.ball_radius(0.2));
   check("jet_fitting_curvatures, ball_radius", 0.01);
-  EXPECT_THROW(CE::gauss_map_curvatures(mesh, np.ball_radius(0.2)), std::invalid_argument);
+  CE::gauss_map_curvatures(mesh, np.ball_radius(0.2));
+  check("gauss_map_curvatures, ball_radius", 0.05);
 }
 #endif
 

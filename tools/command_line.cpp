@@ -25,10 +25,11 @@ constexpr const char* usage_text =
   "  -o, --output FILE  FILE.csv or FILE.ply (surfaces only); without it, print a summary only\n"
   "      --rings N      neighborhood rings a vertex's estimate starts with (default 1;\n"
   "                     paraboloid, gauss-map, taubin, chen-schmitt, jet, and .mesh input)\n"
-  "      --radius R     instead of rings, fit over the ball of radius R about each vertex (the\n"
+  "      --radius R     instead of rings, estimate over the ball of radius R about each vertex (the\n"
   "                     mesh joined to it by edges inside the ball): R in mesh units, or Nx for N\n"
   "                     mean edge lengths of INPUT (as in 4x); the ball grows where the fit needs\n"
-  "                     more vertices (status widened); paraboloid and jet on surfaces, not with --rings\n"
+  "                     more vertices (status widened); paraboloid, jet and gauss-map on surfaces,\n"
+  "                     not with --rings\n"
   "      --order N      extrapolation order of curve-network, 1..4 (default 1)\n"
   "      --fit-degree D degree of the paraboloid method's fit, 2..4 (default 2: Hamann's paraboloid;\n"
   "                     3 and 4: Taylor fits over 2 and 3 rings, orders 2 and 3 on irregular meshes;\n"
@@ -175,8 +176,8 @@ std::optional<Options> parse_arguments(int argc, char** argv)
   if (o.radius) {
     if (o.tetrahedral)
       fail("--radius applies to surfaces only: the paraboloid method on tetrahedral input (.mesh) takes --rings", 2);
-    if (o.method != Method::paraboloid && o.method != Method::jet)
-      fail("--radius applies to the paraboloid and jet methods only, not to '" + o.method_name + "'", 2);
+    if (o.method != Method::paraboloid && o.method != Method::jet && o.method != Method::gauss_map)
+      fail("--radius applies to the paraboloid, jet and gauss-map methods only, not to '" + o.method_name + "'", 2);
     if (o.rings)
       fail("--radius and --rings exclude each other: a neighborhood is a ball or rings", 2);
   }

@@ -53,7 +53,12 @@ void run_estimator(const Options& o, const Mesh& mesh, double ball_radius,
       else
         run_fit<Tag>(o, mesh, ring_np);
       break;
-    case Method::gauss_map: CE::gauss_map_curvatures<Tag>(mesh, ring_np); break;
+    case Method::gauss_map:
+      if (ball_radius > 0)
+        CE::gauss_map_curvatures<Tag>(mesh, np.ball_radius(ball_radius));
+      else
+        CE::gauss_map_curvatures<Tag>(mesh, ring_np);
+      break;
     case Method::taubin: CE::taubin_curvatures<Tag>(mesh, ring_np); break;
     case Method::chen_schmitt: CE::chen_schmitt_curvatures<Tag>(mesh, ring_np); break;
     case Method::curve_network:

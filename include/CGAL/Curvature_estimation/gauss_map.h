@@ -140,6 +140,20 @@ std::shared_ptr<const Vertex_normal_table<FaceGraph>> gauss_map_normals(const Fa
 /// lone fan) falls back to the area-weighted normal the fit starts from, so that it
 /// does not deprive its neighbors of an estimate; first order there.
 ///
+/// **Curvature at a scale.** With `ball_radius(r)` the least squares are over the
+/// ball of `paraboloid_fitting_curvatures()` (the part of the mesh inside the ball of
+/// radius r about the vertex, joined to it by edges inside the ball) instead of the
+/// 2-ring, grown by steps of 25% until it holds 6 vertices (twice the 3 that determine
+/// `A`) and then while `A` is not determined, up to twice that radius (status `widened`
+/// where it grew); the `quadric_fit` normals are then those of the fit over the ball of
+/// the same radius about each vertex. Its data thus reach twice the radius, and on a
+/// noisy mesh its error at r is about that of the paraboloid fit at 2r: on an
+/// ellipsoid of 10,242 vertices with Gaussian noise of 7% of the mean edge length h
+/// per coordinate, H RMS 0.24, 0.065, 0.034, 0.039, 0.063 at 2, 3, 4, 6, 8 h
+/// (the paraboloid fit of degree 2: 1.02, 0.29, 0.12, 0.040, 0.035). Without noise,
+/// at a fixed number of edges, it converges at order 1 on Delaunay meshes (test
+/// `test_ball_radius`).
+///
 /// **Conventions.** Curvatures are positive where the surface bends away from the
 /// normal (a sphere with outward normals has `max_curvature == min_curvature == 1/r`),
 /// `max_curvature >= min_curvature`, directions are unit, tangent and orthogonal.
@@ -171,22 +185,32 @@ std::shared_ptr<const Vertex_normal_table<FaceGraph>> gauss_map_normals(const Fa
 ///     \cgalParamType{`CGAL::Curvature_estimation::Neighbor_weighting`}
 ///     \cgalParamDefault{none: the least-squares fit}
 ///   \cgalParamNEnd
-///   \ceSurfaceOutputParameters{K = det A (see above), `ok` or `not_estimable`}
+///   \cgalParamNBegin{ball_radius}
+///     \cgalParamDescription{the radius of the ball that is the neighborhood of the least-squares differential
+///                           and of the `quadric_fit` normals instead of the rings (see Curvature at a scale
+///                           above); not with `neighbor_weighting`}
+///     \cgalParamType{`double`, positive, in the units of the mesh (see `mean_edge_length()`)}
+///     \cgalParamDefault{none: the rings}
+///   \cgalParamNEnd
+///   \ceSurfaceOutputParameters{K = det A (see above), `ok`; `widened` where a ball grew; or `not_estimable`}
 /// \cgalNamedParamsEnd
 ///
 /// \throws std::invalid_argument if a parameter is out of its range, or if `ball_radius`
-///         is given (neighborhoods are set in rings).
+///         is given with `neighbor_weighting`.
 template <typename ConcurrencyTag = CGAL::Sequential_tag,
           typename FaceGraph,
           typename NamedParameters = parameters::Default_named_parameters>
 void gauss_map_curvatures(const FaceGraph& g, const NamedParameters& np = parameters::default_values())
 {
-  const internal::Fit_parameters fit = internal::fit_parameters(np, "gauss_map_curvatures");
+  const internal::Fit_parameters fit = internal::fit_parameters(np, "gauss_map_curvatures", true);
   const internal::Gauss_map_differential_method method = internal::gauss_map_differential_method(np);
+  if (fit.settings.ball_radius > 0 && method != internal::Gauss_map_differential_method::least_squares_2_ring)
+    throw std::invalid_argument("gauss_map_curvatures: ball_radius is for the least-squares differential, "
+                                "not with neighbor_weighting");
   internal::estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
     return internal::Gauss_map_estimator<FaceGraph, std::decay_t<decltype(vpm)>>(
       g, vpm, internal::Shared_vertex_normals<FaceGraph>{internal::gauss_map_normals<ConcurrencyTag>(g, vpm, np, fit)},
-      method);
+      method, fit.settings.ball_radius);
   });
 }
 

@@ -251,10 +251,13 @@ public:
   // The normals are those of `Normals`.
   static constexpr bool uses_given_normals = false;
 
+  // With a `ball_radius` (> 0, least_squares_2_ring only), the least squares are
+  // over the ball of that radius instead of the 2-ring (see ball_least_squares).
   Gauss_map_estimator(const FaceGraph& g, VertexPointMap vpm, Normals normals,
-                      Gauss_map_differential_method method = Gauss_map_differential_method::least_squares_2_ring)
+                      Gauss_map_differential_method method = Gauss_map_differential_method::least_squares_2_ring,
+                      double ball_radius = 0)
     : local_(g, vpm), normals_(std::move(normals)), method_(method),
-      differential_(method == Gauss_map_differential_method::face_centroid_weighted)
+      differential_(method == Gauss_map_differential_method::face_centroid_weighted), ball_radius_(ball_radius)
   {}
 
   Surface_estimate estimate(vertex_descriptor v, const Eigen::Vector3d*)
@@ -266,15 +269,11 @@ public:
 
     const Tangent_frame tangents = tangent_basis<3>(normal);
     if (method_ == Gauss_map_differential_method::least_squares_2_ring) {
-      least_squares_.clear();
       rings_.start(v, g);
+      if (ball_radius_ > 0)
+        return ball_least_squares(tangents, normal);
       rings_.extend(g);
-      const std::vector<vertex_descriptor>& neighbors = rings_.vertices();
-      Eigen::Vector3d neighbor_normal;
-      for (std::size_t i = 1; i < neighbors.size(); ++i)
-        if (lookup(neighbors[i], neighbor_normal))
-          least_squares_.add(tangents, local_(neighbors[i]), neighbor_normal - normal);
-      if (!least_squares_.determined())
+      if (!fit_least_squares(tangents, normal, false))
         return Surface_estimate();
       return shape_estimate_from_matrix(least_squares_.shape_matrix(), tangents, normal, local_.scale(), true);
     }
@@ -306,12 +305,49 @@ public:
 private:
   bool lookup(vertex_descriptor u, Eigen::Vector3d& n) { return normals_.find(u, n); }
 
+  // Gauss_map_least_squares over the vertices gathered by rings_ (in the ball
+  // only, with `in_ball`); whether it is determined.
+  bool fit_least_squares(const Tangent_frame& tangents, const Eigen::Vector3d& normal, bool in_ball)
+  {
+    least_squares_.clear();
+    const std::vector<vertex_descriptor>& neighbors = rings_.vertices();
+    Eigen::Vector3d neighbor_normal;
+    for (std::size_t i = 1; i < neighbors.size(); ++i)
+      if ((!in_ball || rings_.inside_ball(i)) && lookup(neighbors[i], neighbor_normal))
+        least_squares_.add(tangents, local_(neighbors[i]), neighbor_normal - normal);
+    return least_squares_.determined();
+  }
+
+  // The least squares over the connected part of the mesh in the ball of radius
+  // ball_radius_ (Ring_collector::grow_ball), grown as fit_in_growing_ball says
+  // (to at least 6 vertices, twice the 3 that determine the differential, then
+  // while it is not determined); status widened where it grew. The normals'
+  // noise, divided by distances up to the radius and averaged over the ball,
+  // falls as the radius grows (test_ball_radius).
+  Surface_estimate ball_least_squares(const Tangent_frame& tangents, const Eigen::Vector3d& normal)
+  {
+    const FaceGraph& g = local_.graph();
+    const int growths = fit_in_growing_ball(
+      ball_radius_ / local_.scale(), 3,
+      [&](double radius) {
+        return rings_.grow_ball(g, radius * radius, [&](vertex_descriptor w) { return local_(w).squaredNorm(); });
+      },
+      [&] { return rings_.ball_size(); }, [&] { return fit_least_squares(tangents, normal, true); });
+    if (growths == 0)
+      return Surface_estimate();
+    Surface_estimate e = shape_estimate_from_matrix(least_squares_.shape_matrix(), tangents, normal, local_.scale(), true);
+    if (growths > 1 && e.status == Estimation_status::ok)
+      e.status = Estimation_status::widened;
+    return e;
+  }
+
   Vertex_local_coordinates<FaceGraph, VertexPointMap> local_;
   Normals normals_;
   Gauss_map_differential_method method_;
   Gauss_map_differential differential_;
   Gauss_map_least_squares least_squares_;
   Ring_collector<FaceGraph> rings_;
+  double ball_radius_ = 0;
 };
 
 } // namespace internal
