@@ -15,6 +15,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include "kuhn_grid.h"
+#include "random_numbers.h"
 #include "surface_mesh_properties.h"
 #include "test_surfaces.h"
 
@@ -28,10 +29,13 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <random>
+#include <set>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <utility>
 #include <vector>
 
 namespace fs = std::filesystem;
@@ -1321,10 +1325,8 @@ TEST_F(TetrahedralTest, OptionsThatDoNotApply)
   const fs::path p = graph("g", t, sample(t, [](double x, double, double) { return x; }));
   expect_rejected({"-m", "gauss-map", p.string()}, "gauss-map on .mesh");
   expect_rejected({"-m", "jet", p.string()}, "jet on .mesh");
-  expect_rejected({"--radius", "2x", p.string()}, "--radius on .mesh");
-  const Result radius = run({"--radius", "2x", p.string()});
-  EXPECT_NE(radius.err.find("--radius"), std::string::npos) << radius.err;
-  EXPECT_NE(radius.err.find("paraboloid"), std::string::npos) << radius.err;
+  expect_rejected({"-m", "jet", "--radius", "2x", p.string()}, "jet with --radius on .mesh");
+  expect_rejected({"--radius", "2x", "--rings", "2", p.string()}, "--radius with --rings on .mesh");
   const fs::path ply = dir / "out.ply";
   const Result r = run({"-o", ply.string(), p.string()});
   EXPECT_EQ(r.exit_code, 2);
@@ -1333,6 +1335,70 @@ TEST_F(TetrahedralTest, OptionsThatDoNotApply)
   EXPECT_FALSE(fs::exists(ply));
   // --rings applies.
   EXPECT_EQ(rows(p, {"--rings", "2"}).size(), t.points.size());
+}
+
+// --radius on .mesh input: the ball, and the mean edge length that Nx multiplies, are
+// those of R^4 (the points (x, y, z, f)): 3x is 3 times that length, to the last bit,
+// computed here over the tetrahedra's edges, each once; the summary shows the radius
+// and the mean number of vertices in a ball. On the bowl of QuadraticGraphHasTheExactCurvatureInside
+// with noise in f, the ball averages the noise that the 1-ring fit measures.
+TEST_F(TetrahedralTest, RadiusIsABallOfR4)
+{
+  const int n = 13;
+  const Tetrahedra t = kuhn_grid(n);
+  std::mt19937 random(1);
+  std::vector<double> f = sample(t, [](double x, double y, double z) { return (x * x + y * y + z * z) / 2; });
+  for (double& value : f)
+    value += 0.005 * ce_test::uniform_symmetric(random);
+  const fs::path p = graph("noisy_bowl", t, f);
+
+  std::set<std::pair<std::size_t, std::size_t>> edges;
+  for (const auto& c : t.cells)
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+        edges.emplace(std::min(c[i], c[j]), std::max(c[i], c[j]));
+  double length_sum = 0;
+  for (const auto& [a, b] : edges) {
+    const auto& q = t.points[a];
+    const auto& r = t.points[b];
+    length_sum += std::sqrt((q[0] - r[0]) * (q[0] - r[0]) + (q[1] - r[1]) * (q[1] - r[1]) +
+                            (q[2] - r[2]) * (q[2] - r[2]) + (f[a] - f[b]) * (f[a] - f[b]));
+  }
+  const double mean_edge = length_sum / double(edges.size());
+  std::ostringstream radius;
+  radius.precision(17);
+  radius << 3 * mean_edge;
+
+  const std::vector<Row> in_edges = rows(p, {"--radius", "3x"}), in_units = rows(p, {"--radius", radius.str()}),
+                         rings = rows(p);
+  ASSERT_EQ(in_edges.size(), t.points.size());
+  ASSERT_EQ(in_units.size(), t.points.size());
+  double ball_sum = 0, rings_sum = 0;
+  std::size_t interior = 0;
+  for (std::size_t v = 0; v < in_edges.size(); ++v) {
+    EXPECT_NE(in_edges[v].status, "failed") << "row " << v;
+    EXPECT_EQ(in_edges[v].status, in_units[v].status) << "row " << v;
+    EXPECT_EQ(in_edges[v].values, in_units[v].values) << "row " << v;
+    const auto& q = t.points[v];
+    if (std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2])}) > 0.5)
+      continue;  // within the ball's reach of the boundary
+    const double l = std::sqrt(1 + q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+    const double H = (-1 / (l * l * l) - 2 / l) / 3;
+    ball_sum += (in_edges[v].values[3] - H) * (in_edges[v].values[3] - H);
+    rings_sum += (rings[v].values[3] - H) * (rings[v].values[3] - H);
+    ++interior;
+  }
+  const double ball_rms = std::sqrt(ball_sum / double(interior)), rings_rms = std::sqrt(rings_sum / double(interior));
+  std::cout << "noisy bowl (" << interior << " interior vertices), H RMS: 1 ring " << rings_rms << ", radius 3x "
+            << ball_rms << '\n';
+  EXPECT_LT(ball_rms, rings_rms / 2);
+
+  const Result s = run({"--radius", "3x", p.string()});
+  EXPECT_EQ(s.exit_code, 0) << s.err;
+  std::ostringstream line;
+  line << "radius: " << 3 * mean_edge << " (3 mean edge lengths of " << mean_edge << ")";
+  EXPECT_NE(s.out.find(line.str()), std::string::npos) << line.str() << " in\n" << s.out;
+  EXPECT_NE(s.out.find("mean neighborhood: "), std::string::npos) << s.out;
 }
 
 TEST_F(TetrahedralTest, BadInput)

@@ -28,7 +28,8 @@ constexpr const char* usage_text =
   "      --radius R     instead of rings, estimate over the ball of radius R about each vertex (the\n"
   "                     mesh joined to it by edges inside the ball): R in mesh units, or Nx for N\n"
   "                     mean edge lengths of INPUT (as in 4x); the ball grows where the fit needs\n"
-  "                     more vertices (status widened); paraboloid, jet and gauss-map on surfaces,\n"
+  "                     more vertices (status widened); paraboloid, jet and gauss-map; on .mesh\n"
+  "                     input the ball and the edges are in R^4, of the points (x, y, z, f);\n"
   "                     not with --rings\n"
   "      --order N      extrapolation order of curve-network, 1..4 (default 1)\n"
   "      --fit-degree D degree of the paraboloid method's fit, 2..4 (default 2: Hamann's paraboloid;\n"
@@ -174,8 +175,6 @@ std::optional<Options> parse_arguments(int argc, char** argv)
     fail("--scalars applies to tetrahedral input (.mesh) only", 2);
   }
   if (o.radius) {
-    if (o.tetrahedral)
-      fail("--radius applies to surfaces only: the paraboloid method on tetrahedral input (.mesh) takes --rings", 2);
     if (o.method != Method::paraboloid && o.method != Method::jet && o.method != Method::gauss_map)
       fail("--radius applies to the paraboloid, jet and gauss-map methods only, not to '" + o.method_name + "'", 2);
     if (o.rings)

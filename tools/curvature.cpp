@@ -59,15 +59,14 @@ int run_surface(const Options& o)
 int run_tetrahedral(const Options& o)
 {
   const Tetrahedral_input input = read_tetrahedral_input(o.input, o.scalars);
-  double seconds = 0;
-  const std::vector<Tetrahedral_row> rows = estimate_tetrahedral(o, input, seconds);
+  const Tetrahedral_estimates estimates = estimate_tetrahedral(o, input);
   if (!o.output.empty()) {  // CSV: parse_arguments refuses PLY for tetrahedral input
     Atomic_file out(o.output);
-    write_tetrahedral_csv(out, rows);
+    write_tetrahedral_csv(out, estimates.rows);
     out.commit();
     return 0;
   }
-  print_tetrahedral_summary(o, input, rows, seconds);
+  print_tetrahedral_summary(o, input, estimates);
   return 0;
 }
 

@@ -24,16 +24,16 @@ void print_range(const char* name, std::vector<double> values)
   std::cout << name << ": min " << *min << ", median " << *median << ", max " << *max << '\n';
 }
 
-// --radius: the radius, and the mean number of vertices in a ball.
-void print_ball(const Mesh& mesh, double radius, double mean_edge_length)
+// --radius: the radius, and the mean number of vertices in a ball (`size`, over
+// `vertices` vertices).
+void print_ball(double radius, double mean_edge_length, const Ball_size& size, std::size_t vertices)
 {
-  const Ball_size size = mean_ball_size(mesh, radius);
   std::ostringstream mean;
   mean << std::fixed << std::setprecision(1) << size.mean;
   std::cout << "radius: " << radius << " (" << radius / mean_edge_length << " mean edge lengths of "
             << mean_edge_length << ")\n"
             << "mean neighborhood: " << mean.str() << " vertices in a ball (the vertex included, before a fit widens it";
-  if (size.sampled < num_vertices(mesh))
+  if (size.sampled < vertices)
     std::cout << "; over " << size.sampled << " evenly spaced vertices";
   std::cout << ")\n";
 }
@@ -76,18 +76,21 @@ void print_surface_summary(const Options& o, const Soup& soup, const Mesh& mesh,
             << num_faces(mesh) << " faces)\n"
             << "method: " << o.method_name << '\n';
   if (rows.ball_radius > 0)
-    print_ball(mesh, rows.ball_radius, rows.mean_edge_length);
+    print_ball(rows.ball_radius, rows.mean_edge_length, mean_ball_size(mesh, rows.ball_radius), num_vertices(mesh));
   print_estimates(rows, num_vertices(mesh), rows.seconds);
 }
 
-void print_tetrahedral_summary(const Options& o, const Tetrahedral_input& input,
-                               const std::vector<Tetrahedral_row>& rows, double seconds)
+void print_tetrahedral_summary(const Options& o, const Tetrahedral_input& input, const Tetrahedral_estimates& estimates)
 {
+  const std::size_t vertices = input.mesh.points.size();
   std::cout << "input: " << o.input << '\n'
-            << "vertices: " << input.mesh.points.size() << '\n'
+            << "vertices: " << vertices << '\n'
             << "tetrahedra: " << input.mesh.cells.size() << '\n'
             << "method: " << o.method_name << " (hypersurface of R^4)\n";
-  print_estimates(rows, input.mesh.points.size(), seconds);
+  if (estimates.ball_radius > 0)
+    print_ball(estimates.ball_radius, estimates.mean_edge_length, mean_ball_size(input, estimates.ball_radius),
+               vertices);
+  print_estimates(estimates.rows, vertices, estimates.seconds);
 }
 
 } // namespace ce_tool

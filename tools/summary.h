@@ -17,8 +17,7 @@ namespace ce_tool {
 
 void print_surface_summary(const Options& o, const Soup& soup, const Mesh& mesh, const Surface_estimates& rows);
 
-void print_tetrahedral_summary(const Options& o, const Tetrahedral_input& input,
-                               const std::vector<Tetrahedral_row>& rows, double seconds);
+void print_tetrahedral_summary(const Options& o, const Tetrahedral_input& input, const Tetrahedral_estimates& estimates);
 
 } // namespace ce_tool
 

@@ -11,7 +11,6 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <sstream>
 #include <utility>
 
 namespace ce_tool {
@@ -93,13 +92,7 @@ Surface_estimates estimate(const Options& o, Mesh& mesh, std::vector<V> file_to_
     return e;
   if (o.radius) {
     e.mean_edge_length = CE::mean_edge_length(mesh);
-    e.ball_radius = o.radius->in_mean_edges ? o.radius->value * e.mean_edge_length : o.radius->value;
-    if (!(e.ball_radius > 0) || !std::isfinite(e.ball_radius)) {
-      std::ostringstream message;
-      message << "--radius " << o.radius->value << "x is no positive finite length: the mean edge length of the mesh is "
-              << e.mean_edge_length;
-      fail(message.str(), 2);
-    }
+    e.ball_radius = ball_radius(*o.radius, e.mean_edge_length);
   }
   e.seconds = run_with_threads(o.threads, [&](auto tag) {
     run_estimator<decltype(tag)>(o, mesh, e.ball_radius, e.H, e.K, e.pcd, e.status);
@@ -109,22 +102,14 @@ Surface_estimates estimate(const Options& o, Mesh& mesh, std::vector<V> file_to_
 
 Ball_size mean_ball_size(const Mesh& mesh, double radius)
 {
-  const std::size_t n = num_vertices(mesh);
-  const std::size_t stride = std::max<std::size_t>(1, (n + max_ball_samples - 1) / max_ball_samples);
   CE::internal::Ring_collector<Mesh> ball;
-  std::size_t i = 0, sum = 0;
-  Ball_size result;
-  for (const V v : vertices(mesh))
-    if (i++ % stride == 0) {
-      const Point& center = mesh.point(v);
-      ball.start(v, mesh);
-      ball.grow_ball(mesh, radius * radius, [&](V w) { return CGAL::squared_distance(mesh.point(w), center); });
-      sum += ball.ball_size();
-      ++result.sampled;
-    }
-  if (result.sampled != 0)
-    result.mean = double(sum) / double(result.sampled);
-  return result;
+  return mean_ball_size(num_vertices(mesh), [&](std::size_t i) {
+    const V v(static_cast<Mesh::size_type>(i));
+    const Point& center = mesh.point(v);
+    ball.start(v, mesh);
+    ball.grow_ball(mesh, radius * radius, [&](V w) { return CGAL::squared_distance(mesh.point(w), center); });
+    return ball.ball_size();
+  });
 }
 
 } // namespace ce_tool

@@ -5,6 +5,7 @@
 #define CE_TOOLS_SURFACE_ESTIMATION_H
 
 #include "command_line.h"
+#include "estimation_settings.h"
 #include "kernel.h"
 #include "soup_repair.h"
 
@@ -50,20 +51,7 @@ struct Surface_estimates
 // --radius Nx is N times the mean edge length of `mesh`.
 Surface_estimates estimate(const Options& o, Mesh& mesh, std::vector<V> file_to_mesh);
 
-// The number of vertices in the ball of radius `radius` about a vertex of `mesh`,
-// as the ball_radius estimators gather it before they grow it (the vertex and the
-// mesh joined to it by edges inside the ball): its mean over `sampled` vertices,
-// all of them up to max_ball_samples, else at most that many, evenly spaced in the
-// vertex order. On CGAL's bunny, Chinese dragon, armadillo and elephant at 2, 4
-// and 8 mean edge lengths, counting every ball took 40% to 65% of the time of the
-// sequential paraboloid estimate, and the sample's mean was within 2% of the mean
-// over all vertices.
-struct Ball_size
-{
-  double mean = 0;
-  std::size_t sampled = 0;
-};
-constexpr std::size_t max_ball_samples = 1000;
+// Ball_size (estimation_settings.h) of the balls of radius `radius` in `mesh`.
 Ball_size mean_ball_size(const Mesh& mesh, double radius);
 
 } // namespace ce_tool

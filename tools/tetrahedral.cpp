@@ -7,13 +7,18 @@
 #include "tool_error.h"
 
 #include <CGAL/Curvature_estimation/hypersurface_paraboloid_fitting.h>
+#include <CGAL/Curvature_estimation/internal/neighborhood.h>
 #include <CGAL/property_map.h>
 
+#include <Eigen/Core>
+
+#include <cmath>
 #include <cstddef>
 #include <filesystem>
 #include <string_view>
 #include <system_error>
 #include <utility>
+#include <vector>
 
 namespace ce_tool {
 
@@ -35,6 +40,38 @@ std::string scalars_path(const std::string& mesh_path, const std::string& scalar
     fail("no scalar field for '" + mesh_path + "': '" + beside +
          "' does not exist (name a Medit .sol with --scalars FILE.sol)");
   return beside;
+}
+
+// The vertices' points in R^4, (x, y, z, f), in the .mesh's order.
+std::vector<Eigen::Vector4d> graph_points(const Tetrahedral_input& input)
+{
+  std::vector<Eigen::Vector4d> points;
+  points.reserve(input.mesh.points.size());
+  for (std::size_t v = 0; v < input.mesh.points.size(); ++v) {
+    const Point& p = input.mesh.points[v];
+    points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()), input.scalars[v]);
+  }
+  return points;
+}
+
+// The mean length in R^4 of the edges of the tetrahedra (each edge once), over those
+// of finite length; 0 where there is none.
+double mean_edge_length(const Tetrahedral_input& input)
+{
+  const CE::Tetrahedral_complex_stars<Tetrahedral_mesh> stars(input.mesh);
+  const std::vector<Eigen::Vector4d> points = graph_points(input);
+  double sum = 0;
+  std::size_t count = 0;
+  for (std::size_t v = 0; v < stars.size(); ++v)
+    for (std::size_t k = stars.neighbor_offsets[v]; k < stars.neighbor_offsets[v + 1]; ++k) {
+      const std::size_t w = stars.neighbors[k];
+      const double length = (points[w] - points[v]).norm();
+      if (w > v && std::isfinite(length)) {
+        sum += length;
+        ++count;
+      }
+    }
+  return count != 0 ? sum / double(count) : 0.0;
 }
 
 } // namespace
@@ -65,7 +102,7 @@ Tetrahedral_input read_tetrahedral_input(const std::string& mesh_path, const std
   return input;
 }
 
-std::vector<Tetrahedral_row> estimate_tetrahedral(const Options& o, const Tetrahedral_input& input, double& seconds)
+Tetrahedral_estimates estimate_tetrahedral(const Options& o, const Tetrahedral_input& input)
 {
   const std::size_t n = input.mesh.points.size();
   std::vector<CE::Hypersurface_principal_curvatures_and_directions<std::array<double, 4>>> principal(n);
@@ -74,21 +111,41 @@ std::vector<Tetrahedral_row> estimate_tetrahedral(const Options& o, const Tetrah
   const auto points =
     CE::make_graph_point_map(CE::Tetrahedral_complex_traits<Tetrahedral_mesh>::default_point_map(input.mesh),
                              CGAL::make_property_map(input.scalars));
-  const auto np = with_rings(o, CE::parameters::vertex_point_map(points)
-                                  .vertex_principal_curvatures_and_directions_map(CGAL::make_property_map(principal))
-                                  .vertex_mean_curvature_map(CGAL::make_property_map(H))
-                                  .vertex_Gaussian_curvature_map(CGAL::make_property_map(K))
-                                  .vertex_estimation_status_map(CGAL::make_property_map(status))
-                                  .fit_degree(o.fit_degree.value_or(2)));
-  seconds = run_with_threads(o.threads, [&](auto tag) {
-    CE::hypersurface_paraboloid_fitting_curvatures<decltype(tag)>(input.mesh, np);
+  const auto np = CE::parameters::vertex_point_map(points)
+                    .vertex_principal_curvatures_and_directions_map(CGAL::make_property_map(principal))
+                    .vertex_mean_curvature_map(CGAL::make_property_map(H))
+                    .vertex_Gaussian_curvature_map(CGAL::make_property_map(K))
+                    .vertex_estimation_status_map(CGAL::make_property_map(status))
+                    .fit_degree(o.fit_degree.value_or(2));
+  Tetrahedral_estimates e;
+  if (o.radius) {
+    e.mean_edge_length = mean_edge_length(input);
+    e.ball_radius = ball_radius(*o.radius, e.mean_edge_length);
+  }
+  e.seconds = run_with_threads(o.threads, [&](auto tag) {
+    if (e.ball_radius > 0)
+      CE::hypersurface_paraboloid_fitting_curvatures<decltype(tag)>(input.mesh, np.ball_radius(e.ball_radius));
+    else
+      CE::hypersurface_paraboloid_fitting_curvatures<decltype(tag)>(input.mesh, with_rings(o, np));
   });
 
-  std::vector<Tetrahedral_row> rows(n);
+  e.rows.resize(n);
   for (std::size_t v = 0; v < n; ++v)
-    rows[v] = {principal[v].max_curvature, principal[v].mid_curvature, principal[v].min_curvature, H[v], K[v],
-               status[v]};
-  return rows;
+    e.rows[v] = {principal[v].max_curvature, principal[v].mid_curvature, principal[v].min_curvature, H[v], K[v],
+                 status[v]};
+  return e;
+}
+
+Ball_size mean_ball_size(const Tetrahedral_input& input, double radius)
+{
+  const CE::Tetrahedral_complex_stars<Tetrahedral_mesh> stars(input.mesh);
+  const std::vector<Eigen::Vector4d> points = graph_points(input);
+  CE::internal::Tetrahedral_ring_collector ball;
+  return mean_ball_size(stars.size(), [&](std::size_t v) {
+    ball.start(v, stars);
+    ball.grow_ball(stars, radius * radius, [&](std::size_t w) { return (points[w] - points[v]).squaredNorm(); });
+    return ball.ball_size();
+  });
 }
 
 } // namespace ce_tool

@@ -5,6 +5,7 @@
 #define CE_TOOLS_TETRAHEDRAL_H
 
 #include "command_line.h"
+#include "estimation_settings.h"
 #include "kernel.h"
 
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
@@ -39,8 +40,21 @@ struct Tetrahedral_row
   std::array<double, 5> values() const { return {k_1, k_2, k_3, mean, gaussian}; }
 };
 
-// A row per vertex of the .mesh, in its order; `seconds` is the estimator's time.
-std::vector<Tetrahedral_row> estimate_tetrahedral(const Options& o, const Tetrahedral_input& input, double& seconds);
+struct Tetrahedral_estimates
+{
+  std::vector<Tetrahedral_row> rows;  // a row per vertex of the .mesh, in its order
+  double seconds = 0;                 // the estimator's time
+  // With --radius: the balls' radius and the mean edge length, both in R^4 (the
+  // points (x, y, z, f)); 0 without it.
+  double ball_radius = 0, mean_edge_length = 0;
+};
+
+// --radius Nx is N times the mean edge length of the graph in R^4, whose balls the
+// fit takes.
+Tetrahedral_estimates estimate_tetrahedral(const Options& o, const Tetrahedral_input& input);
+
+// Ball_size (estimation_settings.h) of the balls of radius `radius` in R^4.
+Ball_size mean_ball_size(const Tetrahedral_input& input, double radius);
 
 } // namespace ce_tool
 
