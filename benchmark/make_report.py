@@ -267,9 +267,10 @@ def save_figure(fig, path, dpi, **layout):
 
 
 def mesh_order(meshes):
-    """Grids by size, then real meshes in the benchmark's order."""
+    """Grids by size, then real meshes by name: the same columns in every report, whatever order
+    the interleaved repetitions wrote them in."""
     grids = sorted((m for m in meshes if m.startswith("grid_")), key=lambda m: int(m[5:]))
-    return grids + [m for m in meshes if not m.startswith("grid_")]
+    return grids + sorted(m for m in meshes if not m.startswith("grid_"))
 
 
 # ---------------------------------------------------------------------------
@@ -751,7 +752,7 @@ BALL_ESTIMATORS = [
     ("paraboloid_ball", "paraboloid, fit degree 2", "paraboloid_ball_4h"),
     ("paraboloid_d3_ball", "paraboloid, fit degree 3", "paraboloid_d3"),
     ("jet_d2_ball", "jet fitting d=2", "jet_d2_2rings"),
-    ("gauss_map_ball", "Gauss map", "gauss_map"),
+    ("gauss_map_ball", "Gauss map over the ball", "gauss_map"),
     ("icc_ball", "ICC", "icc_ball_2h"),
 ]
 # The references of the noise section, over their usual neighborhoods (no radius).
