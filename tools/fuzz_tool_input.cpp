@@ -61,8 +61,7 @@ void run_tetrahedral_input(const std::string& path)
   Options o;
   o.threads = 1;
   const Tetrahedral_input input = read_tetrahedral_input(path, "");
-  double seconds = 0;
-  check_rows(estimate_tetrahedral(o, input, seconds), input.mesh.points.size());
+  check_rows(estimate_tetrahedral(o, input).rows, input.mesh.points.size());
 }
 
 } // namespace
