@@ -88,8 +88,7 @@ void print_tetrahedral_summary(const Options& o, const Tetrahedral_input& input,
             << "tetrahedra: " << input.mesh.cells.size() << '\n'
             << "method: " << o.method_name << " (hypersurface of R^4)\n";
   if (estimates.ball_radius > 0)
-    print_ball(estimates.ball_radius, estimates.mean_edge_length, mean_ball_size(input, estimates.ball_radius),
-               vertices);
+    print_ball(estimates.ball_radius, estimates.mean_edge_length, estimates.ball_size, vertices);
   print_estimates(estimates.rows, vertices, estimates.seconds);
 }
 

@@ -54,25 +54,42 @@ std::vector<Eigen::Vector4d> graph_points(const Tetrahedral_input& input)
   return points;
 }
 
-// The mean length in R^4 of the edges of the tetrahedra (each edge once), over those
-// of finite length; 0 where there is none.
-double mean_edge_length(const Tetrahedral_input& input)
+// The tetrahedra's edges as a graph of points of R^4, which --radius measures.
+struct Graph
 {
-  const CE::Tetrahedral_complex_stars<Tetrahedral_mesh> stars(input.mesh);
-  const std::vector<Eigen::Vector4d> points = graph_points(input);
-  double sum = 0;
-  std::size_t count = 0;
-  for (std::size_t v = 0; v < stars.size(); ++v)
-    for (std::size_t k = stars.neighbor_offsets[v]; k < stars.neighbor_offsets[v + 1]; ++k) {
-      const std::size_t w = stars.neighbors[k];
-      const double length = (points[w] - points[v]).norm();
-      if (w > v && std::isfinite(length)) {
-        sum += length;
-        ++count;
+  explicit Graph(const Tetrahedral_input& input) : stars(input.mesh), points(graph_points(input)) {}
+
+  // The mean length of the edges (each edge once), over those of finite length; 0
+  // where there is none.
+  double mean_edge_length() const
+  {
+    double sum = 0;
+    std::size_t count = 0;
+    for (std::size_t v = 0; v < stars.size(); ++v)
+      for (std::size_t k = stars.neighbor_offsets[v]; k < stars.neighbor_offsets[v + 1]; ++k) {
+        const std::size_t w = stars.neighbors[k];
+        const double length = (points[w] - points[v]).norm();
+        if (w > v && std::isfinite(length)) {
+          sum += length;
+          ++count;
+        }
       }
-    }
-  return count != 0 ? sum / double(count) : 0.0;
-}
+    return count != 0 ? sum / double(count) : 0.0;
+  }
+
+  Ball_size mean_ball_size(double radius) const
+  {
+    CE::internal::Tetrahedral_ring_collector ball;
+    return ce_tool::mean_ball_size(stars.size(), [&](std::size_t v) {
+      ball.start(v, stars);
+      ball.grow_ball(stars, radius * radius, [&](std::size_t w) { return (points[w] - points[v]).squaredNorm(); });
+      return ball.ball_size();
+    });
+  }
+
+  const CE::Tetrahedral_complex_stars<Tetrahedral_mesh> stars;
+  const std::vector<Eigen::Vector4d> points;
+};
 
 } // namespace
 
@@ -119,8 +136,10 @@ Tetrahedral_estimates estimate_tetrahedral(const Options& o, const Tetrahedral_i
                     .fit_degree(o.fit_degree.value_or(2));
   Tetrahedral_estimates e;
   if (o.radius) {
-    e.mean_edge_length = mean_edge_length(input);
+    const Graph graph(input);
+    e.mean_edge_length = graph.mean_edge_length();
     e.ball_radius = ball_radius(*o.radius, e.mean_edge_length);
+    e.ball_size = graph.mean_ball_size(e.ball_radius);
   }
   e.seconds = run_with_threads(o.threads, [&](auto tag) {
     if (e.ball_radius > 0)
@@ -134,18 +153,6 @@ Tetrahedral_estimates estimate_tetrahedral(const Options& o, const Tetrahedral_i
     e.rows[v] = {principal[v].max_curvature, principal[v].mid_curvature, principal[v].min_curvature, H[v], K[v],
                  status[v]};
   return e;
-}
-
-Ball_size mean_ball_size(const Tetrahedral_input& input, double radius)
-{
-  const CE::Tetrahedral_complex_stars<Tetrahedral_mesh> stars(input.mesh);
-  const std::vector<Eigen::Vector4d> points = graph_points(input);
-  CE::internal::Tetrahedral_ring_collector ball;
-  return mean_ball_size(stars.size(), [&](std::size_t v) {
-    ball.start(v, stars);
-    ball.grow_ball(stars, radius * radius, [&](std::size_t w) { return (points[w] - points[v]).squaredNorm(); });
-    return ball.ball_size();
-  });
 }
 
 } // namespace ce_tool

@@ -45,16 +45,14 @@ struct Tetrahedral_estimates
   std::vector<Tetrahedral_row> rows;  // a row per vertex of the .mesh, in its order
   double seconds = 0;                 // the estimator's time
   // With --radius: the balls' radius and the mean edge length, both in R^4 (the
-  // points (x, y, z, f)); 0 without it.
+  // points (x, y, z, f)), and the balls' mean size; zeros without it.
   double ball_radius = 0, mean_edge_length = 0;
+  Ball_size ball_size;
 };
 
 // --radius Nx is N times the mean edge length of the graph in R^4, whose balls the
 // fit takes.
 Tetrahedral_estimates estimate_tetrahedral(const Options& o, const Tetrahedral_input& input);
-
-// Ball_size (estimation_settings.h) of the balls of radius `radius` in R^4.
-Ball_size mean_ball_size(const Tetrahedral_input& input, double radius);
 
 } // namespace ce_tool
 
