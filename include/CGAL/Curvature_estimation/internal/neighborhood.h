@@ -180,7 +180,8 @@ std::shared_ptr<const Vertex_adjacency> vertex_adjacency(const FaceGraph& g)
     neighbors.reserve(num_halfedges(g));
     std::size_t next = 0;  // the first index whose offset is not set; those without a vertex get no neighbors
     for (vertex_descriptor v : vertices(g)) {
-      for (const std::size_t i = static_cast<std::size_t>(v); next <= i; ++next)
+      const std::size_t i = static_cast<std::size_t>(v);
+      for (; next <= i; ++next)
         offsets[next] = static_cast<std::uint32_t>(neighbors.size());
       const halfedge_descriptor h = halfedge(v, g);
       if (h != boost::graph_traits<FaceGraph>::null_halfedge())
