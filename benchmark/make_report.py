@@ -493,8 +493,8 @@ def targets_section(speed, quick, end_to_end):
                   "the same instructions, although the same interleaving of the fits alone, on pre-gathered "
                   "1-rings, took 20%% off their time: in the whole call the CPU already overlaps one vertex's "
                   "fits with the next one's gathering. The next step is the two vertices' fits in the two "
-                  "lanes of an SSE2 register, which would halve the fits' instructions (about 1,500 of the "
-                  "5,600); 150 ns needs that with four lanes (AVX2, which a default build does not enable) "
+                  "lanes of an SSE2 register, which would halve the fits' 3,100 instructions (1,500 fewer of "
+                  "the 5,600); 150 ns needs that with four lanes (AVX2, which a default build does not enable) "
                   "and one fit. The ICC and jet ratios follow from the same time."
                   % ("{:,}".format(two_fits), fmt_ns(p_seq), fmt_ns(area), fmt_ns(given), fmt_ns(p_seq),
                      "{:,}".format(instructions), per_ns, per_ns / 2.1, TARGET_NS,
