@@ -210,8 +210,8 @@ void run_accuracy(bool quick, const std::string& path)
         write_rows(out, c, h, info, e);
       }
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      std::fprintf(stderr, "accuracy: %-22s %-9s level %d: %7zu vertices, %6.2f s\n", c.surface.c_str(),
-                   c.mesh.c_str(), level, c.soup.points.size(), seconds);
+      std::fprintf(stderr, "accuracy: %-22s %-9s level %d: %7zu vertices, %6.2f s\n", c.surface.c_str(), c.mesh.c_str(),
+                   level, c.soup.points.size(), seconds);
     }
 }
 
@@ -266,13 +266,13 @@ void run_noise(bool quick, const std::string& path)
       const auto widened =
         std::count(timed.first.status.begin(), timed.first.status.end(), CE::Estimation_status::widened);
       out << name << ',' << seed << ',' << mesh.number_of_vertices() << ',' << h << ',' << noisy.sigma << ','
-          << radius_edges << ',' << ball_vertices << ',' << H.rms << ',' << H.max << ','
-          << errors.gaussian.stats().rms << ',' << widened << ',' << timed.second << '\n';
+          << radius_edges << ',' << ball_vertices << ',' << H.rms << ',' << H.max << ',' << errors.gaussian.stats().rms
+          << ',' << widened << ',' << timed.second << '\n';
     };
     for (const Estimator_info& info : estimators())
       if (info.id == Estimator::paraboloid || info.id == Estimator::gauss_map)
         write(info.name, "", "", timed_run(mesh, [&](const Mesh& m, const auto& np) {
-                run<CGAL::Sequential_tag>(info.id, m, Normal_map(), h, np);  // no given normals read
+                run<CGAL::Sequential_tag>(info.id, m, Normal_map(), h, np); // no given normals read
               }));
     for (const int edges : {1, 2, 3, 4, 6, 8}) {
       const std::string ball_vertices = std::to_string(mean_ball_size(mesh, edges * h));
@@ -326,7 +326,7 @@ void run_bunny(const std::string& dir)
                           mesh, [&](const Mesh& m, const auto& np) { run<Tag>(info.id, m, normals, h, np); },
                           CE::parameters::default_values())
                           .mean);
-      if (info.id == Estimator::paraboloid) {  // the default fit over its 1-ring, then over balls
+      if (info.id == Estimator::paraboloid) { // the default fit over its 1-ring, then over balls
         ball_names.push_back(names.back());
         ball_columns.push_back(columns.back());
       }
@@ -335,13 +335,11 @@ void run_bunny(const std::string& dir)
 
   for (const int edges : {2, 6}) {
     ball_names.push_back("ball_" + std::to_string(edges) + "h");
-    ball_columns.push_back(ce_test::run_with_all_outputs<Kernel>(
-                             mesh,
-                             [&](const Mesh& m, const auto& np) {
-                               run_in_ball<Tag>(Ball_estimator::paraboloid, m, edges * h, np);
-                             },
-                             CE::parameters::default_values())
-                             .mean);
+    ball_columns.push_back(
+      ce_test::run_with_all_outputs<Kernel>(
+        mesh, [&](const Mesh& m, const auto& np) { run_in_ball<Tag>(Ball_estimator::paraboloid, m, edges * h, np); },
+        CE::parameters::default_values())
+        .mean);
   }
   write_vertex_columns(dir + "/bunny_ball_mean_curvature.csv", mesh, ball_names, ball_columns);
 

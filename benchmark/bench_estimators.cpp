@@ -264,8 +264,9 @@ void register_all(bool quick)
   for (const Input& input : inputs)
     for (const Estimator_info& e : estimators()) {
       const std::string base = std::string(e.name) + "/" + input.name;
-      benchmark::RegisterBenchmark((base + "/seq").c_str(),
-                                   [e, input](benchmark::State& s) { time_estimator<CGAL::Sequential_tag>(s, e.id, input); })
+      benchmark::RegisterBenchmark(
+        (base + "/seq").c_str(),
+        [e, input](benchmark::State& s) { time_estimator<CGAL::Sequential_tag>(s, e.id, input); })
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime()
         ->MinTime(min_time)
@@ -274,8 +275,9 @@ void register_all(bool quick)
 #ifdef CGAL_LINKED_WITH_TBB
       if (!e.parallel)
         continue;
-      benchmark::RegisterBenchmark((base + "/par").c_str(),
-                                   [e, input](benchmark::State& s) { time_estimator<CGAL::Parallel_tag>(s, e.id, input); })
+      benchmark::RegisterBenchmark(
+        (base + "/par").c_str(),
+        [e, input](benchmark::State& s) { time_estimator<CGAL::Parallel_tag>(s, e.id, input); })
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime() // wall clock: CPU time of the main thread says nothing of a parallel run
         ->MinTime(min_time)

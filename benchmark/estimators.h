@@ -36,16 +36,16 @@ namespace CE = CGAL::Curvature_estimation;
 
 enum class Estimator
 {
-  paraboloid,                // default (quadric-fit) normals
-  paraboloid_area_normals,   // area-weighted face-average normals
-  paraboloid_given_normals,  // normals passed in a vertex_normal_map
-  paraboloid_d3,             // fit_degree(3): cubic Taylor fit over 2 rings
-  paraboloid_d4,             // fit_degree(4): quartic Taylor fit over 3 rings
-  paraboloid_ball_2h,        // ball_radius of 2 mean edge lengths
-  paraboloid_ball_4h,        // ... 4
-  paraboloid_ball_8h,        // ... 8
-  curve_network_1,           // extrapolation_order(1): O(h^2)
-  curve_network_2,           // extrapolation_order(2): O(h^4) on parameter grids
+  paraboloid,               // default (quadric-fit) normals
+  paraboloid_area_normals,  // area-weighted face-average normals
+  paraboloid_given_normals, // normals passed in a vertex_normal_map
+  paraboloid_d3,            // fit_degree(3): cubic Taylor fit over 2 rings
+  paraboloid_d4,            // fit_degree(4): quartic Taylor fit over 3 rings
+  paraboloid_ball_2h,       // ball_radius of 2 mean edge lengths
+  paraboloid_ball_4h,       // ... 4
+  paraboloid_ball_8h,       // ... 8
+  curve_network_1,          // extrapolation_order(1): O(h^2)
+  curve_network_2,          // extrapolation_order(2): O(h^4) on parameter grids
   gauss_map,
   taubin,
   chen_schmitt,
@@ -53,12 +53,12 @@ enum class Estimator
   jet_d2_2rings,
   jet_d4_3rings,
 #if CGAL_VERSION_MAJOR >= 6
-  icc,                // CGAL::Polygon_mesh_processing::interpolated_corrected_curvatures, its defaults
-  icc_ball_1h,        // the same with ball_radius = 1 mean edge length
-  icc_ball_2h,        // the same with ball_radius = 2 mean edge lengths
-  icc_our_normals,    // the same given our default normals (estimated in the same call)
-  discrete_mean,      // CGAL::Polygon_mesh_processing::discrete_mean_curvatures: H only
-  discrete_Gaussian,  // CGAL::Polygon_mesh_processing::discrete_Gaussian_curvatures: K only
+  icc,               // CGAL::Polygon_mesh_processing::interpolated_corrected_curvatures, its defaults
+  icc_ball_1h,       // the same with ball_radius = 1 mean edge length
+  icc_ball_2h,       // the same with ball_radius = 2 mean edge lengths
+  icc_our_normals,   // the same given our default normals (estimated in the same call)
+  discrete_mean,     // CGAL::Polygon_mesh_processing::discrete_mean_curvatures: H only
+  discrete_Gaussian, // CGAL::Polygon_mesh_processing::discrete_Gaussian_curvatures: K only
 #endif
 };
 
@@ -137,20 +137,20 @@ void run_icc(const Mesh& mesh, const NamedParameters& np, const CGALParameters& 
   PMP::interpolated_corrected_curvatures(
     mesh, settings.vertex_mean_curvature_map(mean_curvature_map(np))
             .vertex_Gaussian_curvature_map(Gaussian_curvature_map(np))
-            .vertex_principal_curvatures_and_directions_map(CGAL::parameters::get_parameter(
-              np, CE::internal_np::vertex_principal_curvatures_and_directions_map)));
+            .vertex_principal_curvatures_and_directions_map(
+              CGAL::parameters::get_parameter(np, CE::internal_np::vertex_principal_curvatures_and_directions_map)));
 }
 #endif
 
 /// The estimators the report runs over a ball of any radius (its noise section).
 enum class Ball_estimator
 {
-  paraboloid,     // paraboloid_fitting_curvatures, default fit_degree (2)
-  paraboloid_d3,  // ... fit_degree(3)
-  jet_d2,         // jet_fitting_curvatures, jet_degree(2)
-  gauss_map,      // gauss_map_curvatures
+  paraboloid,    // paraboloid_fitting_curvatures, default fit_degree (2)
+  paraboloid_d3, // ... fit_degree(3)
+  jet_d2,        // jet_fitting_curvatures, jet_degree(2)
+  gauss_map,     // gauss_map_curvatures
 #if CGAL_VERSION_MAJOR >= 6
-  icc,            // CGAL::Polygon_mesh_processing::interpolated_corrected_curvatures
+  icc, // CGAL::Polygon_mesh_processing::interpolated_corrected_curvatures
 #endif
 };
 

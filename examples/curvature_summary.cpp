@@ -8,8 +8,8 @@
 #include <CGAL/Curvature_estimation.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <algorithm>
 #include <chrono>
@@ -34,8 +34,10 @@ int main(int argc, char** argv)
 
   auto mean = mesh.add_property_map<vertex_descriptor, double>("v:mean_curvature").first;
   auto gaussian = mesh.add_property_map<vertex_descriptor, double>("v:Gaussian_curvature").first;
-  auto principal = mesh.add_property_map<vertex_descriptor, CE::Principal_curvatures_and_directions<Kernel>>(
-                         "v:principal_curvatures_and_directions").first;
+  auto principal = mesh
+                     .add_property_map<vertex_descriptor, CE::Principal_curvatures_and_directions<Kernel>>(
+                       "v:principal_curvatures_and_directions")
+                     .first;
   auto status = mesh.add_property_map<vertex_descriptor, CE::Estimation_status>("v:status").first;
 
   const auto start = std::chrono::steady_clock::now();

@@ -7,8 +7,8 @@
 #include <CGAL/Curvature_estimation/curve_network.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -36,12 +36,11 @@ int main(int argc, char** argv)
   auto status = mesh.add_property_map<vertex_descriptor, CE::Estimation_status>("v:status").first;
 
   try {
-    CE::curve_network_curvatures<CGAL::Parallel_if_available_tag>(
-      mesh, CE::parameters::vertex_mean_curvature_map(mean)
-              .vertex_Gaussian_curvature_map(gaussian)
-              .vertex_estimation_status_map(status)
-              .curve_model(CE::Curve_model::bezier)
-              .extrapolation_order(order));
+    CE::curve_network_curvatures<CGAL::Parallel_if_available_tag>(mesh, CE::parameters::vertex_mean_curvature_map(mean)
+                                                                          .vertex_Gaussian_curvature_map(gaussian)
+                                                                          .vertex_estimation_status_map(status)
+                                                                          .curve_model(CE::Curve_model::bezier)
+                                                                          .extrapolation_order(order));
   } catch (const std::invalid_argument& e) {
     std::cerr << "error: " << e.what() << '\n';
     return 1;
@@ -51,10 +50,18 @@ int main(int argc, char** argv)
   std::size_t ok = 0, widened = 0, fallback = 0, failed = 0;
   for (vertex_descriptor v : vertices(mesh)) {
     switch (status[v]) {
-      case CE::Estimation_status::ok: ++ok; break;
-      case CE::Estimation_status::widened: ++widened; break;
-      case CE::Estimation_status::fallback: ++fallback; break;
-      default: ++failed; continue;
+      case CE::Estimation_status::ok:
+        ++ok;
+        break;
+      case CE::Estimation_status::widened:
+        ++widened;
+        break;
+      case CE::Estimation_status::fallback:
+        ++fallback;
+        break;
+      default:
+        ++failed;
+        continue;
     }
     H.push_back(mean[v]);
     K.push_back(gaussian[v]);
@@ -64,8 +71,7 @@ int main(int argc, char** argv)
 
   std::cout << "mesh: " << path << " (" << num_vertices(mesh) << " vertices)\n"
             << "estimator: curve network (Wollmann), Bezier curves, extrapolation order " << order << '\n'
-            << "curve network at the requested order: " << ok
-            << ", lower order: " << widened
+            << "curve network at the requested order: " << ok << ", lower order: " << widened
             << ", paraboloid-fit fallback (no curve network, or no mesh lines): " << fallback
             << ", not estimable: " << failed << '\n';
   if (!H.empty())

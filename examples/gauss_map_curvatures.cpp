@@ -10,8 +10,8 @@
 #include <CGAL/Curvature_estimation/taubin.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <algorithm>
 #include <cmath>
@@ -58,8 +58,8 @@ int main(int argc, char** argv)
   report("Gauss map (Chen-Wu-Chi)");
   CE::taubin_curvatures<CGAL::Parallel_if_available_tag>(mesh, outputs);
   report("Taubin, area weights   ");
-  CE::taubin_curvatures<CGAL::Parallel_if_available_tag>(
-    mesh, outputs.neighbor_weighting(CE::Neighbor_weighting::centroid));
+  CE::taubin_curvatures<CGAL::Parallel_if_available_tag>(mesh,
+                                                         outputs.neighbor_weighting(CE::Neighbor_weighting::centroid));
   report("Taubin, centroid       ");
   CE::chen_schmitt_curvatures<CGAL::Parallel_if_available_tag>(mesh, outputs);
   report("Chen-Schmitt           ");

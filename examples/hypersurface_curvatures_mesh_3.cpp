@@ -3,8 +3,8 @@
 // and estimates the three principal curvatures of the graph W = f(x, y, z), a
 // hypersurface of R^4, directly on the C3T3's triangulation.
 // Usage: hypersurface_curvatures_mesh_3 [out.csv]   (one row per vertex: x,y,z,f,k1,k2,k3,H,K,status)
-#include <CGAL/Curvature_estimation/hypersurface_paraboloid_fitting.h>
 #include <CGAL/Curvature_estimation/Tetrahedral_complex_traits.h>
+#include <CGAL/Curvature_estimation/hypersurface_paraboloid_fitting.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Labeled_mesh_domain_3.h>
@@ -110,7 +110,7 @@ int main(int argc, char** argv)
   for (int i = 0; i < 3; ++i)
     std::printf("%s in [%.4f, %.4f]\n", names[i], kmin[i], kmax[i]);
   std::printf("RMS error of H against the exact value: %.4f (exact H in [%.4f, %.4f])\n",
-              estimated ? std::sqrt(error2 / double(estimated)) : 0.0, -(0.8 / std::pow(1.64, 1.5) + 1.6 / std::sqrt(1.64)) / 3,
-              -0.8);
+              estimated ? std::sqrt(error2 / double(estimated)) : 0.0,
+              -(0.8 / std::pow(1.64, 1.5) + 1.6 / std::sqrt(1.64)) / 3, -0.8);
   return estimated > 0 ? 0 : 1;
 }

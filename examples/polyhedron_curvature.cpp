@@ -6,8 +6,8 @@
 #include <CGAL/Curvature_estimation.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Polyhedron_3.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 
 #include <boost/property_map/property_map.hpp>
@@ -33,8 +33,9 @@ int main(int argc, char** argv)
   std::map<vertex_descriptor, CE::Principal_curvatures_and_directions<Kernel>> principal;
   std::map<vertex_descriptor, CE::Estimation_status> status;
   CE::paraboloid_fitting_curvatures(
-    polyhedron, CE::parameters::vertex_principal_curvatures_and_directions_map(boost::make_assoc_property_map(principal))
-                  .vertex_estimation_status_map(boost::make_assoc_property_map(status)));
+    polyhedron,
+    CE::parameters::vertex_principal_curvatures_and_directions_map(boost::make_assoc_property_map(principal))
+      .vertex_estimation_status_map(boost::make_assoc_property_map(status)));
 
   // The first few vertices, as a user would inspect them.
   int shown = 0;

@@ -1,17 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Curvature at a chosen scale: `ball_radius` for paraboloid_fitting_curvatures() (every fit_degree),
-// jet_fitting_curvatures() and gauss_map_curvatures(), and mean_edge_length(). The ball is the connected part of the mesh
-// in it (a folded strip, whose other sheet is inside the ball but not joined to the vertex inside
-// it); on noisy meshes (the noise family of test/common/noisy_meshes.h) the error falls with the
-// radius, and at a radius of 4 edges is no worse than CGAL's jet fitting on the same ball; on
-// noise-free Delaunay meshes a radius of a fixed number of edges converges as the mesh is refined.
+// jet_fitting_curvatures() and gauss_map_curvatures(), and mean_edge_length(). The ball is the connected part of the
+// mesh in it (a folded strip, whose other sheet is inside the ball but not joined to the vertex inside it); on noisy
+// meshes (the noise family of test/common/noisy_meshes.h) the error falls with the radius, and at a radius of 4 edges
+// is no worse than CGAL's jet fitting on the same ball; on noise-free Delaunay meshes a radius of a fixed number of
+// edges converges as the mesh is refined.
 #include <CGAL/Curvature_estimation/chen_schmitt.h>
 #include <CGAL/Curvature_estimation/gauss_map.h>
+#include <CGAL/Curvature_estimation/internal/neighborhood.h>
 #include <CGAL/Curvature_estimation/jet_fitting.h>
 #include <CGAL/Curvature_estimation/mean_edge_length.h>
 #include <CGAL/Curvature_estimation/paraboloid_fitting.h>
 #include <CGAL/Curvature_estimation/taubin.h>
-#include <CGAL/Curvature_estimation/internal/neighborhood.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
@@ -210,8 +210,8 @@ TEST(BallRadius, NoiseErrorFallsWithTheRadius)
       const Estimates estimates = paraboloid_in_ball(e.mesh, edges * e.h, degree);
       const double rms = H_rms(estimates, e.exact);
       const std::size_t widened = count_status(estimates, CE::Estimation_status::widened);
-      std::printf("noisy ellipsoid, fit_degree %d, radius %.0f edges: H RMS %.4f, widened %zu of %zu\n", degree,
-                  edges, rms, widened, estimates.status.size());
+      std::printf("noisy ellipsoid, fit_degree %d, radius %.0f edges: H RMS %.4f, widened %zu of %zu\n", degree, edges,
+                  rms, widened, estimates.status.size());
       EXPECT_LT(rms, 1.05 * previous) << "degree " << degree << ", " << edges << " edges";
       EXPECT_EQ(count_status(estimates, CE::Estimation_status::not_estimable), 0u);
       if (edges == 1) {
@@ -268,8 +268,8 @@ TEST(BallRadius, NoWorseThanJetFittingOnTheSameBall)
     const Noisy_ellipsoid e = noisy_ellipsoid(5, seed);
     const Estimates ours = paraboloid_in_ball(e.mesh, 4 * e.h, 2), jet = jet_in_ball(e.mesh, 4 * e.h);
     const double ours_rms = H_rms(ours, e.exact), jet_rms = H_rms(jet, e.exact);
-    std::printf("noisy ellipsoid of %zu vertices, seed %u, radius 4 edges: H RMS %.4f, jet %.4f\n",
-                ours.mean.size(), seed, ours_rms, jet_rms);
+    std::printf("noisy ellipsoid of %zu vertices, seed %u, radius 4 edges: H RMS %.4f, jet %.4f\n", ours.mean.size(),
+                seed, ours_rms, jet_rms);
     for (std::size_t i = 0; i < ours.mean.size(); ++i)
       ASSERT_TRUE(std::isfinite(ours.mean[i]) && std::isfinite(ours.gaussian[i])) << "vertex " << i;
     EXPECT_LE(ours_rms, jet_rms) << "seed " << seed;
@@ -284,9 +284,9 @@ TEST(BallRadius, NoWorseThanJetFittingOnTheSameBall)
 TEST(BallRadius, NoiseFreeMeshesConvergeAtAFixedNumberOfEdges)
 {
   const std::vector<ce_test::Graph_function> functions = ce_test::hamann_table1_functions();
-  const double min_order[] = {0.8, 0, 0.8, 1.6, 2.2};  // by degree
-  for (const std::size_t f : {5, 8})  // monkey saddle, trigonometric
-    for (const int degree : {0, 2, 3, 4}) {  // 0: the Gauss map
+  const double min_order[] = {0.8, 0, 0.8, 1.6, 2.2}; // by degree
+  for (const std::size_t f : {5, 8})                  // monkey saddle, trigonometric
+    for (const int degree : {0, 2, 3, 4}) {           // 0: the Gauss map
       ce_test::Convergence H;
       std::optional<double> order;
       for (const std::size_t points : {1000, 4000, 16000}) {
@@ -296,15 +296,15 @@ TEST(BallRadius, NoiseFreeMeshesConvergeAtAFixedNumberOfEdges)
         const Estimates e = degree == 0 ? gauss_map_in_ball(mesh, 4 * h) : paraboloid_in_ball(mesh, 4 * h, degree);
         // Interior: the ball of 4 edges (and its growth) away from the square's border.
         const double margin = 8 * h;
-        const ce_test::Curvature_errors t = ce_test::curvature_errors(e, ce_test::graph_curvatures(functions[f], soup),
-          [&](std::size_t i) {
+        const ce_test::Curvature_errors t =
+          ce_test::curvature_errors(e, ce_test::graph_curvatures(functions[f], soup), [&](std::size_t i) {
             const Eigen::Vector2d xy = soup.params[i];
             return std::abs(xy.x()) < 1 - margin && std::abs(xy.y()) < 1 - margin;
           });
         order = H.add(h, t.mean.stats().rms);
         const std::string estimator = degree == 0 ? "Gauss map" : "fit_degree " + std::to_string(degree);
-        std::printf("%s Delaunay, %s, radius 4 edges, h %.4f: interior H RMS %.3e max %.3e",
-                    functions[f].name.c_str(), estimator.c_str(), h, t.mean.stats().rms, t.mean.stats().max);
+        std::printf("%s Delaunay, %s, radius 4 edges, h %.4f: interior H RMS %.3e max %.3e", functions[f].name.c_str(),
+                    estimator.c_str(), h, t.mean.stats().rms, t.mean.stats().max);
         if (order)
           std::printf(", order %.2f", *order);
         std::printf("\n");
@@ -322,7 +322,7 @@ TEST(BallRadius, PolyhedronGivesTheSameEstimatesAsSurfaceMesh)
   const Mesh mesh = ce_test::to_mesh<Mesh>(soup);
   const Polyhedron polyhedron = ce_test::to_mesh<Polyhedron>(soup);
   const double radius = 3 * CE::mean_edge_length(mesh);
-  for (const int degree : {0, 2, 4}) {  // 0: the Gauss map
+  for (const int degree : {0, 2, 4}) { // 0: the Gauss map
     const Estimates expected = degree == 0 ? gauss_map_in_ball(mesh, radius) : paraboloid_in_ball(mesh, radius, degree);
     std::map<Polyhedron::Vertex_const_handle, double> H;
     std::map<Polyhedron::Vertex_const_handle, CE::Estimation_status> status;
@@ -335,7 +335,8 @@ TEST(BallRadius, PolyhedronGivesTheSameEstimatesAsSurfaceMesh)
       CE::paraboloid_fitting_curvatures(polyhedron, np.fit_degree(degree));
     std::size_t i = 0;
     for (auto v = polyhedron.vertices_begin(); v != polyhedron.vertices_end(); ++v, ++i) {
-      EXPECT_NEAR(H[v], expected.mean[i], 1e-12 * (1 + std::abs(expected.mean[i]))) << "degree " << degree << ", vertex " << i;
+      EXPECT_NEAR(H[v], expected.mean[i], 1e-12 * (1 + std::abs(expected.mean[i])))
+        << "degree " << degree << ", vertex " << i;
       EXPECT_EQ(status[v], expected.status[i]) << "degree " << degree << ", vertex " << i;
     }
     EXPECT_EQ(i, expected.mean.size());
@@ -356,8 +357,8 @@ TEST(BallRadius, SmoothWeightsHaveLessBiasAndMoreNoise)
     for (const bool smooth : {false, true})
       rms[smooth] = H_rms(ce_test::run_with_all_outputs<Kernel>(
                             mesh, [](const Mesh& m, const auto& np) { CE::paraboloid_fitting_curvatures(m, np); },
-                            params::ball_radius(radius).neighbor_weighting(
-                              smooth ? CE::Neighbor_weighting::smooth : CE::Neighbor_weighting::uniform)),
+                            params::ball_radius(radius).neighbor_weighting(smooth ? CE::Neighbor_weighting::smooth
+                                                                                  : CE::Neighbor_weighting::uniform)),
                           exact);
     std::printf("ellipsoid, noise %.2f, radius 4 edges: H RMS uniform %.4f, smooth %.4f\n", noise, rms[0], rms[1]);
     if (noise == 0)
@@ -370,21 +371,23 @@ TEST(BallRadius, SmoothWeightsHaveLessBiasAndMoreNoise)
 TEST(BallRadius, OutOfRangeIsRefused)
 {
   const Mesh mesh = ce_test::to_mesh<Mesh>(ce_test::sphere_soup(1, 2));
-  for (const double radius : {0.0, -1.0, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()}) {
+  for (const double radius :
+       {0.0, -1.0, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()})
+  {
     EXPECT_THROW(CE::paraboloid_fitting_curvatures(mesh, params::ball_radius(radius)), std::invalid_argument);
     EXPECT_THROW(CE::jet_fitting_curvatures(mesh, params::ball_radius(radius)), std::invalid_argument);
     EXPECT_THROW(CE::gauss_map_curvatures(mesh, params::ball_radius(radius)), std::invalid_argument);
   }
   // The Gauss map's ball is for its least-squares differential, not the per-face Jacobians.
-  EXPECT_THROW(CE::gauss_map_curvatures(
-                 mesh, params::ball_radius(0.5).neighbor_weighting(CE::Neighbor_weighting::centroid)),
-               std::invalid_argument);
+  EXPECT_THROW(
+    CE::gauss_map_curvatures(mesh, params::ball_radius(0.5).neighbor_weighting(CE::Neighbor_weighting::centroid)),
+    std::invalid_argument);
   // The ball's weights need a ball, and are uniform or smooth; smooth is for the ball fits only.
   EXPECT_THROW(CE::paraboloid_fitting_curvatures(mesh, params::neighbor_weighting(CE::Neighbor_weighting::smooth)),
                std::invalid_argument);
-  EXPECT_THROW(CE::paraboloid_fitting_curvatures(
-                 mesh, params::ball_radius(0.5).neighbor_weighting(CE::Neighbor_weighting::area)),
-               std::invalid_argument);
+  EXPECT_THROW(
+    CE::paraboloid_fitting_curvatures(mesh, params::ball_radius(0.5).neighbor_weighting(CE::Neighbor_weighting::area)),
+    std::invalid_argument);
   EXPECT_THROW(CE::taubin_curvatures(mesh, params::neighbor_weighting(CE::Neighbor_weighting::smooth)),
                std::invalid_argument);
   EXPECT_THROW(CE::gauss_map_curvatures(mesh, params::neighbor_weighting(CE::Neighbor_weighting::smooth)),

@@ -71,16 +71,18 @@ namespace CEI = CGAL::Curvature_estimation::internal;
 namespace PMP = CGAL::Polygon_mesh_processing;
 namespace fs = std::filesystem;
 
-constexpr double total_target = 0.001;     // of the counted vertices of the archive
-constexpr double per_mesh_target = 0.01;   // of the counted vertices of a mesh ...
-constexpr std::size_t large_mesh = 1000;   // ... of at least this many vertices
+constexpr double total_target = 0.001;   // of the counted vertices of the archive
+constexpr double per_mesh_target = 0.01; // of the counted vertices of a mesh ...
+constexpr std::size_t large_mesh = 1000; // ... of at least this many vertices
 constexpr double median_ratio_target = 1.5;
 
 // CGAL's readers report on std::cerr what the repair then fixes.
 class Silence_cerr
 {
 public:
-  Silence_cerr() : saved_(std::cerr.rdbuf(nullptr)) {}
+  Silence_cerr()
+      : saved_(std::cerr.rdbuf(nullptr))
+  {}
   ~Silence_cerr() { std::cerr.rdbuf(saved_); }
 
 private:
@@ -175,15 +177,15 @@ Estimates run(Mesh& mesh, const Estimator& estimator)
 struct Named_estimator
 {
   const char* name;
-  bool meets_targets;  // asserted; the others are printed
+  bool meets_targets; // asserted; the others are printed
   Estimator estimate;
 };
 
 const std::vector<Named_estimator>& estimators()
 {
-#define CE_TEST_ESTIMATOR(function)                                                                                 \
-  [](const Mesh& m, Status_map s, Mean_map h) {                                                                     \
-    CE::function(m, CE::parameters::vertex_estimation_status_map(s).vertex_mean_curvature_map(h));                  \
+#define CE_TEST_ESTIMATOR(function)                                                                                    \
+  [](const Mesh& m, Status_map s, Mean_map h) {                                                                        \
+    CE::function(m, CE::parameters::vertex_estimation_status_map(s).vertex_mean_curvature_map(h));                     \
   }
   static const std::vector<Named_estimator> all = {
     {"paraboloid_fitting", true, CE_TEST_ESTIMATOR(paraboloid_fitting_curvatures)},
@@ -270,7 +272,8 @@ TEST(CGAL_data_meshes, EveryEstimatorWithItsDefaults)
     const std::vector<char> before = refused_before(mesh);
     std::vector<double> our_errors, jet_errors;
     const auto vpm = get(CGAL::vertex_point, mesh);
-    CEI::Jet_fitter<Mesh, decltype(vpm)> reference(mesh, vpm, 4, 2, 3, 6, 1e3, 0);  // jet_degree(4).neighborhood_rings(3)
+    CEI::Jet_fitter<Mesh, decltype(vpm)> reference(mesh, vpm, 4, 2, 3, 6, 1e3,
+                                                   0); // jet_degree(4).neighborhood_rings(3)
     CEI::Platelet_fitter<Mesh, decltype(vpm)> hamann(mesh, vpm, CEI::Platelet_fit_settings());
     for (Vertex v : vertices(mesh)) {
       const std::size_t i = std::size_t(v);
@@ -328,14 +331,16 @@ TEST(CGAL_data_meshes, EveryEstimatorWithItsDefaults)
       }
   }
 
-  std::printf("paraboloid_fitting: %zu vertices accepted by the whitened test or the fallback; per mesh, where H_ref exists "
-              "(%zu of %zu meshes over %.1f, not asserted):\n",
-              newly_accepted, ratio_over, ratio_meshes, median_ratio_target);
+  std::printf(
+    "paraboloid_fitting: %zu vertices accepted by the whitened test or the fallback; per mesh, where H_ref exists "
+    "(%zu of %zu meshes over %.1f, not asserted):\n",
+    newly_accepted, ratio_over, ratio_meshes, median_ratio_target);
   for (const std::string& line : ratio_lines)
     std::printf("%s\n", line.c_str());
 
   ASSERT_FALSE(fallback_errors.empty());
-  std::printf("paraboloid_fitting's fallback at %zu vertices where Hamann's fit is refused: median |H - H_ref| %.3g, the Gauss map's %.3g\n",
+  std::printf("paraboloid_fitting's fallback at %zu vertices where Hamann's fit is refused: median |H - H_ref| %.3g, "
+              "the Gauss map's %.3g\n",
               fallback_errors.size(), median(fallback_errors), median(gauss_map_errors));
   EXPECT_LT(median(fallback_errors), median(gauss_map_errors));
 
@@ -346,4 +351,4 @@ TEST(CGAL_data_meshes, EveryEstimatorWithItsDefaults)
   EXPECT_LT(median(border_errors), median(hamann_errors));
 }
 
-}  // namespace
+} // namespace

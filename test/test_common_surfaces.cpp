@@ -43,8 +43,8 @@ const Graph_function& fn(int index) // 1-based, as in Hamann's table
 // Sample points inside [-1,1]^2 (away from the grid lines of symmetric cases).
 const std::vector<Eigen::Vector2d>& sample_points()
 {
-  static const std::vector<Eigen::Vector2d> pts = {
-      {0.0, 0.0}, {0.3, -0.7}, {-0.81, 0.44}, {0.95, 0.95}, {-0.5, -0.25}, {0.12, 0.66}, {-1.0, 1.0}, {0.7, -0.05}};
+  static const std::vector<Eigen::Vector2d> pts = {{0.0, 0.0},    {0.3, -0.7},  {-0.81, 0.44}, {0.95, 0.95},
+                                                   {-0.5, -0.25}, {0.12, 0.66}, {-1.0, 1.0},   {0.7, -0.05}};
   return pts;
 }
 
@@ -63,9 +63,10 @@ TEST(HamannTable, NineFunctionsAndRows)
   const auto rows = ce_test::hamann_table1_published();
   ASSERT_EQ(fs.size(), 9u);
   ASSERT_EQ(rows.size(), 9u);
-  const char* names[] = {"plane", "cylinder", "sphere", "paraboloid", "hyperboloid",
-                         "monkey_saddle", "cubic", "exponential", "trigonometric"};
-  for (std::size_t i = 0; i < 9; ++i) EXPECT_EQ(fs[i].name, names[i]);
+  const char* names[] = {"plane",         "cylinder", "sphere",      "paraboloid",   "hyperboloid",
+                         "monkey_saddle", "cubic",    "exponential", "trigonometric"};
+  for (std::size_t i = 0; i < 9; ++i)
+    EXPECT_EQ(fs[i].name, names[i]);
   EXPECT_EQ(rows[0].k1, 0.0);
   EXPECT_EQ(rows[0].K, 0.0);
   EXPECT_DOUBLE_EQ(rows[3].k1, 0.003073);
@@ -102,10 +103,9 @@ TEST(HamannTable, AnalyticDerivativesMatchFiniteDifferences)
       const double f0 = g.f(x, y);
       EXPECT_NEAR(g.fxx(x, y), (g.f(x + h2, y) - 2 * f0 + g.f(x - h2, y)) / (h2 * h2), 1e-6);
       EXPECT_NEAR(g.fyy(x, y), (g.f(x, y + h2) - 2 * f0 + g.f(x, y - h2)) / (h2 * h2), 1e-6);
-      EXPECT_NEAR(g.fxy(x, y),
-                  (g.f(x + h2, y + h2) - g.f(x + h2, y - h2) - g.f(x - h2, y + h2) + g.f(x - h2, y - h2)) /
-                      (4 * h2 * h2),
-                  1e-6);
+      EXPECT_NEAR(
+        g.fxy(x, y),
+        (g.f(x + h2, y + h2) - g.f(x + h2, y - h2) - g.f(x - h2, y + h2) + g.f(x - h2, y - h2)) / (4 * h2 * h2), 1e-6);
     }
 }
 
@@ -247,7 +247,7 @@ TEST(GraphCurvature, RodriguesFormulaByFiniteDifferences)
         const Eigen::Vector3d t = (k == 0) ? c.d_max : c.d_min;
         const double kappa = (k == 0) ? c.k_max : c.k_min;
         const Eigen::Vector3d dn =
-            (normal(g, x + eps * t.x(), y + eps * t.y()) - normal(g, x - eps * t.x(), y - eps * t.y())) / (2 * eps);
+          (normal(g, x + eps * t.x(), y + eps * t.y()) - normal(g, x - eps * t.x(), y - eps * t.y())) / (2 * eps);
         EXPECT_NEAR((dn - kappa * t).norm(), 0.0, 1e-8);
       }
     }
@@ -284,7 +284,8 @@ TEST(ClosedSurfaces, TorusCurvature)
       EXPECT_NEAR((c2.normal - c.normal).norm(), 0.0, 1e-12);
       for (int d = 0; d < 2; ++d) {
         const double du = d == 0 ? 0.0 : eps, dv = d == 0 ? eps : 0.0; // d = 0: x_v (tube), 1: x_u
-        const Eigen::Vector3d dp = ce_test::torus_point(R, r, u + du, v + dv) - ce_test::torus_point(R, r, u - du, v - dv);
+        const Eigen::Vector3d dp =
+          ce_test::torus_point(R, r, u + du, v + dv) - ce_test::torus_point(R, r, u - du, v - dv);
         const Eigen::Vector3d dn = normal(u + du, v + dv) - normal(u - du, v - dv);
         const double kappa = d == 0 ? c.k_max : c.k_min;
         EXPECT_NEAR((dn - kappa * dp).norm() / dp.norm(), 0.0, 1e-8);
@@ -337,7 +338,8 @@ double border_length_on_square(const Mesh& m, double lo, double hi)
   const auto vpm = get(CGAL::vertex_point, m);
   double length = 0.0;
   for (auto h : halfedges(m)) {
-    if (!CGAL::is_border(h, m)) continue;
+    if (!CGAL::is_border(h, m))
+      continue;
     const auto& a = get(vpm, source(h, m));
     const auto& b = get(vpm, target(h, m));
     const bool same_side = (a.x() == lo && b.x() == lo) || (a.x() == hi && b.x() == hi) ||
@@ -541,7 +543,8 @@ TEST(Icosphere, TopologyOrientationRadius)
     const std::size_t f = 20u << (2 * sub);
     ASSERT_EQ(s.faces.size(), f);
     ASSERT_EQ(s.points.size(), f / 2 + 2);
-    for (const auto& p : s.points) EXPECT_NEAR(p.norm(), radius, 1e-13);
+    for (const auto& p : s.points)
+      EXPECT_NEAR(p.norm(), radius, 1e-13);
     for (const auto& t : s.faces) {
       const Eigen::Vector3d n = (s.points[t[1]] - s.points[t[0]]).cross(s.points[t[2]] - s.points[t[0]]);
       EXPECT_GT(n.dot(s.points[t[0]] + s.points[t[1]] + s.points[t[2]]), 0.0);
@@ -590,7 +593,8 @@ TEST(Soup, PerVertexExactValues)
   const Soup s = ce_test::grid_graph_soup(fn(3), 5, -1.0, 1.0);
   const auto ex = ce_test::graph_curvatures(fn(3), s);
   ASSERT_EQ(ex.size(), 25u);
-  for (const auto& c : ex) EXPECT_NEAR(c.k_min, 0.5, 1e-12);
+  for (const auto& c : ex)
+    EXPECT_NEAR(c.k_min, 0.5, 1e-12);
   const auto sp = ce_test::sphere_curvatures(3.0, ce_test::sphere_soup(3.0, 1));
   ASSERT_EQ(sp.size(), 42u);
   EXPECT_DOUBLE_EQ(sp[5].H, 1.0 / 3.0);
@@ -608,7 +612,8 @@ void expect_each_edge_in_two_opposite_faces(const Soup& s)
 {
   std::map<std::pair<std::size_t, std::size_t>, int> directed;
   for (const auto& t : s.faces)
-    for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
+    for (int k = 0; k < 3; ++k)
+      ++directed[{t[k], t[(k + 1) % 3]}];
   for (const auto& e : directed) {
     ASSERT_EQ(e.second, 1) << "edge " << e.first.first << "-" << e.first.second;
     const auto reverse = directed.find({e.first.second, e.first.first});
@@ -642,7 +647,8 @@ TEST(MarchingTetrahedra, ClosedManifoldOnTheSurface)
         auto component = sm.add_property_map<Surface_mesh::Face_index, std::size_t>("f:component").first;
         EXPECT_EQ(CGAL::Polygon_mesh_processing::connected_components(sm, component), 1u);
         std::set<std::array<double, 3>> distinct;
-        for (const auto& p : s.points) distinct.insert({p.x(), p.y(), p.z()});
+        for (const auto& p : s.points)
+          distinct.insert({p.x(), p.y(), p.z()});
         EXPECT_EQ(distinct.size(), s.points.size()); // no two vertices coincide
         for (const auto& p : s.points) {
           EXPECT_LE(std::abs(c.surface.value(p)) / c.surface.gradient(p).norm(), 1e-12 * c.surface.half_width);
@@ -685,8 +691,9 @@ TEST(MarchingTetrahedra, ExactCurvature)
   // The blobs: the analytic gradient and Hessian against central differences.
   const ce_test::Implicit_surface blobs = ce_test::gaussian_blobs();
   const double eps = 1e-5;
-  for (const Eigen::Vector3d& p : {Eigen::Vector3d(0.1, 0.2, -0.3), Eigen::Vector3d(-0.7, 0.05, 0.4),
-                                   Eigen::Vector3d(0.5, -0.6, 0.2)}) {
+  for (const Eigen::Vector3d& p :
+       {Eigen::Vector3d(0.1, 0.2, -0.3), Eigen::Vector3d(-0.7, 0.05, 0.4), Eigen::Vector3d(0.5, -0.6, 0.2)})
+  {
     const Eigen::Vector3d g = blobs.gradient(p);
     const Eigen::Matrix3d H = blobs.hessian(p);
     for (int d = 0; d < 3; ++d) {
@@ -700,7 +707,8 @@ TEST(MarchingTetrahedra, ExactCurvature)
 TEST(MarchingTetrahedra, HasSlivers)
 {
   for (const ce_test::Implicit_surface& s :
-       {ce_test::implicit_ellipsoid(1.0, 0.8, 0.6), ce_test::implicit_torus(1.0, 0.4), ce_test::gaussian_blobs()}) {
+       {ce_test::implicit_ellipsoid(1.0, 0.8, 0.6), ce_test::implicit_torus(1.0, 0.4), ce_test::gaussian_blobs()})
+  {
     SCOPED_TRACE(s.name);
     std::vector<double> q = ce_test::aspect_ratios(ce_test::marching_tetrahedra_soup(s, 48, grid_offset));
     std::sort(q.begin(), q.end());

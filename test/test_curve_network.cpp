@@ -57,19 +57,20 @@ TEST(Curve_curvature, CircleThroughThreePointsOfACircleIsExact)
   ASSERT_TRUE(c.valid);
   EXPECT_NEAR(c.curvature, 1 / radius, 1e-14);
   const Eigen::Vector3d inward = (centre - at(t1)).normalized();
-  const Eigen::Vector3d forward = -std::sin(t1) * e1 + std::cos(t1) * e2;  // d/dt, towards p2
+  const Eigen::Vector3d forward = -std::sin(t1) * e1 + std::cos(t1) * e2; // d/dt, towards p2
   EXPECT_NEAR((c.principal_normal - inward).norm(), 0, 1e-13);
   EXPECT_NEAR((c.tangent - forward).norm(), 0, 1e-13);
   EXPECT_NEAR((c.curvature_vector - inward / radius).norm(), 0, 1e-13);
 
   // Collinear points: a straight line, zero curvature, tangent along the line.
-  const CEI::Curve_estimate line = CEI::circle_curve_curvature(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, 1),
-                                                               Eigen::Vector3d(3, 3, 3));
+  const CEI::Curve_estimate line =
+    CEI::circle_curve_curvature(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(3, 3, 3));
   ASSERT_TRUE(line.valid);
   EXPECT_EQ(line.curvature, 0);
   EXPECT_NEAR((line.tangent - Eigen::Vector3d(1, 1, 1).normalized()).norm(), 0, 1e-15);
   // Coincident points: no estimate.
-  EXPECT_FALSE(CEI::circle_curve_curvature(Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(2, 0, 0)).valid);
+  EXPECT_FALSE(
+    CEI::circle_curve_curvature(Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(2, 0, 0)).valid);
 }
 
 TEST(Curve_curvature, BezierOnAParabolaIsExact)
@@ -134,7 +135,7 @@ TEST(Curve_curvature, OrderNIsExactOnPolynomialCurvesOfDegree2n)
     std::vector<Eigen::Vector3d> a(degree + 1);
     for (int d = 0; d <= degree; ++d)
       a[d] = Eigen::Vector3d(std::sin(1.0 + d), std::cos(2.0 * d + 0.5), 0.3 * d - 0.7) / (1.0 + d);
-    a[1] = Eigen::Vector3d(1.0, 0.2, -0.4);  // a regular curve
+    a[1] = Eigen::Vector3d(1.0, 0.2, -0.4); // a regular curve
     auto c = [&](double t) {
       Eigen::Vector3d p = Eigen::Vector3d::Zero();
       for (int d = degree; d >= 0; --d)
@@ -171,10 +172,12 @@ TEST(Euler_fit, MeusnierOnASphereGivesOneOverRadiusWithOutwardNormals)
   // latitude (kappa = 1/(r sin theta), tilted by theta from the normal).
   const double r = 2;
   const double theta = 0.6, phi = 0.3;
-  const Eigen::Vector3d p = r * Eigen::Vector3d(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+  const Eigen::Vector3d p =
+    r * Eigen::Vector3d(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
   const Eigen::Vector3d outward = p.normalized();
   auto latitude = [&](double f) {
-    return Eigen::Vector3d(r * Eigen::Vector3d(std::sin(theta) * std::cos(f), std::sin(theta) * std::sin(f), std::cos(theta)));
+    return Eigen::Vector3d(
+      r * Eigen::Vector3d(std::sin(theta) * std::cos(f), std::sin(theta) * std::sin(f), std::cos(theta)));
   };
   auto meridian = [&](double t) {
     return Eigen::Vector3d(r * Eigen::Vector3d(std::sin(t) * std::cos(phi), std::sin(t) * std::sin(phi), std::cos(t)));
@@ -228,8 +231,7 @@ TEST(Euler_fit, ThreeDirectionsExactlyMoreByLeastSquares)
 
 TEST(Euler_fit, NormalFromTangentsIsThePlaneNormalOrientedAsAsked)
 {
-  const Eigen::Vector3d t[3] = {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0.6, 0.8, 0),
-                                Eigen::Vector3d(-0.6, 0.8, 0)};
+  const Eigen::Vector3d t[3] = {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0.6, 0.8, 0), Eigen::Vector3d(-0.6, 0.8, 0)};
   Eigen::Vector3d n;
   ASSERT_TRUE(CEI::normal_from_tangents(t, 2, Eigen::Vector3d(0.1, 0, -1), n));
   EXPECT_NEAR((n - Eigen::Vector3d(0, 0, -1)).norm(), 0, 1e-15);
@@ -270,7 +272,7 @@ double fig3_gaussian_curvature(double h, int n, Curve_model model)
     vectors[line] = c.curvature_vector;
   }
   Eigen::Vector3d normal;
-  EXPECT_TRUE(CEI::normal_from_tangents(tangents, 2, X(u0, v0), normal));  // outward
+  EXPECT_TRUE(CEI::normal_from_tangents(tangents, 2, X(u0, v0), normal)); // outward
   double k[3];
   for (int line = 0; line < 3; ++line)
     k[line] = CEI::meusnier_normal_curvature(vectors[line], normal);
@@ -296,7 +298,12 @@ std::vector<double> fig3_slopes(int n, int last)
 
 TEST(Wollmann_fig3, ErrorOrderTwoFourSixOnTheEllipsoid)
 {
-  struct Case { int n; int differences; double expected, tolerance; };
+  struct Case
+  {
+    int n;
+    int differences;
+    double expected, tolerance;
+  };
   // The specification: slope of log2|K_i - K_(i+1)| per halving,
   // -2.00 +- 0.03 over i = 1..6 (n = 1), -4.00 +- 0.05 over i = 1..4 (n = 2),
   // -6.0 +- 0.1 over i = 1..2 (n = 3). i differences give i - 1 slopes.
@@ -466,7 +473,7 @@ TEST(Curve_network, GridGraphStatusesAtTheBoundaryAndReducedOrder)
         const std::size_t k = i + n * j;
         const std::size_t border_distance = std::min(std::min(i, j), std::min(n - 1 - i, n - 1 - j));
         ASSERT_TRUE(std::isfinite(e.mean[k]) && std::isfinite(e.gaussian[k]));
-        const Estimation_status expected = border_distance == 0                  ? Estimation_status::fallback
+        const Estimation_status expected = border_distance == 0                    ? Estimation_status::fallback
                                            : border_distance >= std::size_t(order) ? Estimation_status::ok
                                                                                    : Estimation_status::widened;
         EXPECT_EQ(e.status[k], expected) << i << ' ' << j << " order " << order;
@@ -519,7 +526,8 @@ TEST(Curve_network, IrregularDelaunayMeshHasAStatusAndAFiniteValueEverywhere)
   for (Mesh::Vertex_index v : vertices(mesh)) {
     ASSERT_NE(e.status[i], Estimation_status::not_estimable) << i;
     ASSERT_TRUE(std::isfinite(e.mean[i]) && std::isfinite(e.gaussian[i]) &&
-                std::isfinite(e.principal[i].max_direction.x())) << i;
+                std::isfinite(e.principal[i].max_direction.x()))
+      << i;
     ok += e.status[i] == Estimation_status::ok;
     fallbacks += e.status[i] == Estimation_status::fallback;
     interior[i] = !CGAL::is_border(v, mesh);
@@ -540,9 +548,13 @@ TEST(Curve_network, IrregularityIsTheLeadingRelativeErrorOfTheCurve)
   // The paraboloid z = (x^2 + y^2) / 2, normal curvature 1 in every direction at the origin.
   auto point = [](double x, double y) { return Eigen::Vector3d(x, y, (x * x + y * y) / 2); };
   const Eigen::Vector3d up(0, 0, 1);
-  struct Case { double h_a, h_b, kink; };
+  struct Case
+  {
+    double h_a, h_b, kink;
+  };
   for (const Case& c : {Case{1e-3, 1e-3, 0.0}, Case{1.5e-3, 0.5e-3, 0.0}, Case{1.2e-3, 0.8e-3, 0.0},
-                        Case{1e-3, 1e-3, 0.2}, Case{1e-3, 1e-3, 0.4}}) {
+                        Case{1e-3, 1e-3, 0.2}, Case{1e-3, 1e-3, 0.4}})
+  {
     const Eigen::Vector3d a = point(-c.h_a * std::cos(c.kink / 2), -c.h_a * std::sin(c.kink / 2));
     const Eigen::Vector3d b = point(c.h_b * std::cos(c.kink / 2), -c.h_b * std::sin(c.kink / 2));
     const CEI::Curve_estimate e = CEI::extrapolated_curve_curvature(&a, Eigen::Vector3d::Zero(), &b, 1);
@@ -564,7 +576,7 @@ TEST(Curve_network, IrregularityIsTheLeadingRelativeErrorOfTheCurve)
 // vertex falls back.
 TEST(Curve_network, FallbackExactlyWhereTheCurvesAreNoMeshLines)
 {
-  const ce_test::Graph_function f = ce_test::hamann_table1_functions()[4];  // the hyperboloid
+  const ce_test::Graph_function f = ce_test::hamann_table1_functions()[4]; // the hyperboloid
   const ce_test::Soup soup = ce_test::jittered_grid_graph_soup(f, 41, -0.5, 0.5, 0.15, 7);
   const Mesh mesh = ce_test::to_mesh<Mesh>(soup);
   const Estimates e = estimate(mesh);
@@ -581,7 +593,7 @@ TEST(Curve_network, FallbackExactlyWhereTheCurvesAreNoMeshLines)
   for (Mesh::Vertex_index v : vertices(mesh)) {
     if (!CGAL::is_border(v, mesh))
       ++interior;
-    if (paper.status[i] == Estimation_status::fallback) {  // no curve network: boundary, too few pairs, Euler
+    if (paper.status[i] == Estimation_status::fallback) { // no curve network: boundary, too few pairs, Euler
       EXPECT_EQ(e.status[i], Estimation_status::fallback) << i;
       expect_same(e, hamann, i++);
       continue;
@@ -685,7 +697,8 @@ TEST(Curve_network, SequentialAndParallelAreIdentical)
 {
   // More vertices than one parallel block; irregular, so both paths and the
   // fallback are exercised.
-  const ce_test::Soup soup = ce_test::jittered_grid_graph_soup(ce_test::hamann_table1_functions()[8], 200, -1, 1, 0.2, 3);
+  const ce_test::Soup soup =
+    ce_test::jittered_grid_graph_soup(ce_test::hamann_table1_functions()[8], 200, -1, 1, 0.2, 3);
   const Mesh mesh = ce_test::to_mesh<Mesh>(soup);
   const Estimates sequential = estimate<CGAL::Sequential_tag>(mesh, params::extrapolation_order(2));
   const Estimates parallel = estimate<CGAL::Parallel_tag>(mesh, params::extrapolation_order(2));
@@ -696,4 +709,4 @@ TEST(Curve_network, SequentialAndParallelAreIdentical)
 }
 #endif
 
-}  // namespace
+} // namespace

@@ -49,18 +49,18 @@ ce_test::Error_stats interior_H_errors(const Mesh& mesh, const Estimates& e,
 TEST(DelaunayAgainstJetFitting, DefaultHasNoLargerRmsOrMaximumAtAnyLevel)
 {
   const std::vector<ce_test::Graph_function> functions = ce_test::hamann_table1_functions();
-  for (std::size_t f = 1; f < functions.size(); ++f)  // 0 is the plane
+  for (std::size_t f = 1; f < functions.size(); ++f) // 0 is the plane
     for (const std::uint32_t seed : {1u, 2u, 3u})
       for (const std::size_t points : {1000, 4000, 16000}) {
         const ce_test::Soup soup = ce_test::delaunay_graph_soup(functions[f], points, -1, 1, seed);
         const Mesh mesh = ce_test::to_mesh<Mesh>(soup);
         const auto exact = ce_test::graph_curvatures(functions[f], soup);
-        const ce_test::Error_stats ours = interior_H_errors(
-          mesh,
-          ce_test::run_with_all_outputs<Kernel>(
-            mesh, [](const Mesh& m, const auto& np) { CE::paraboloid_fitting_curvatures(m, np); },
-            params::default_values()),
-          exact);
+        const ce_test::Error_stats ours =
+          interior_H_errors(mesh,
+                            ce_test::run_with_all_outputs<Kernel>(
+                              mesh, [](const Mesh& m, const auto& np) { CE::paraboloid_fitting_curvatures(m, np); },
+                              params::default_values()),
+                            exact);
         const ce_test::Error_stats jet = interior_H_errors(
           mesh,
           ce_test::run_with_all_outputs<Kernel>(

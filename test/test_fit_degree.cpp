@@ -60,7 +60,7 @@ std::vector<char> interior(const Mesh& mesh)
   return inside;
 }
 
-const double min_order[] = {0, 0, 0, 1.8, 2.6};  // by degree
+const double min_order[] = {0, 0, 0, 1.8, 2.6}; // by degree
 
 // The interior H and K RMS along a refinement: every vertex estimated, and the orders between the
 // two finest levels at least min_order[degree].
@@ -101,7 +101,7 @@ struct Refinement
 TEST(FitDegree, DelaunayMeshesConvergeAtOrdersTwoAndThree)
 {
   const std::vector<ce_test::Graph_function> functions = ce_test::hamann_table1_functions();
-  for (const std::size_t f : {3, 5, 8})  // paraboloid, monkey saddle, trigonometric
+  for (const std::size_t f : {3, 5, 8}) // paraboloid, monkey saddle, trigonometric
     for (const std::uint32_t seed : {1u, 2u, 3u})
       for (const int degree : {3, 4}) {
         Refinement r{functions[f].name + " Delaunay, seed " + std::to_string(seed), degree, {}, {}};
@@ -133,7 +133,9 @@ TEST(FitDegree, DegreeFourIsExactOnQuarticGraphsInTheirFrame)
 {
   const ce_test::Graph_function quartic{
     "quartic",
-    [](double x, double y) { return 0.3 * x * x - 0.2 * x * y + 0.1 * y * y * y + 0.05 * x * x * x * y - 0.07 * y * y * y * y; },
+    [](double x, double y) {
+      return 0.3 * x * x - 0.2 * x * y + 0.1 * y * y * y + 0.05 * x * x * x * y - 0.07 * y * y * y * y;
+    },
     [](double x, double y) { return 0.6 * x - 0.2 * y + 0.15 * x * x * y; },
     [](double x, double y) { return -0.2 * x + 0.3 * y * y + 0.05 * x * x * x - 0.28 * y * y * y; },
     [](double x, double y) { return 0.6 + 0.3 * x * y; },
@@ -155,7 +157,7 @@ TEST(FitDegree, DegreeFourIsExactOnQuarticGraphsInTheirFrame)
   std::printf("quartic graph, 21 x 21 grid, vertices 3 rings inside: largest H error degree 4 %.2e, degree 3 %.2e\n",
               worst_four, worst_three);
   EXPECT_LE(worst_four, 1e-9);
-  EXPECT_GT(worst_three, 1e3 * worst_four);  // the quartic terms are there to be fitted
+  EXPECT_GT(worst_three, 1e3 * worst_four); // the quartic terms are there to be fitted
 }
 
 // estimate_vertex_normals with fit_degree d: the area-weighted normal corrected by the gradient of the
@@ -166,7 +168,7 @@ TEST(FitDegree, NormalsOfDegreeDConvergeAtOrderD)
 {
   const std::vector<ce_test::Graph_function> functions = ce_test::hamann_table1_functions();
   const double min_normal_order[] = {0, 0, 1.8, 2.7, 3.5};
-  for (const std::size_t f : {5, 8})  // monkey saddle, trigonometric
+  for (const std::size_t f : {5, 8}) // monkey saddle, trigonometric
     for (const int degree : {2, 3, 4}) {
       ce_test::Convergence angles;
       double order = 0;
@@ -190,8 +192,8 @@ TEST(FitDegree, NormalsOfDegreeDConvergeAtOrderD)
         }
         const double rms = std::sqrt(sum / count);
         const std::optional<double> step = angles.add(ce_test::mean_edge_length(soup), rms);
-        std::printf("%-22s Delaunay, %5zu points, normal of degree %d: interior RMS angle %.3e", functions[f].name.c_str(),
-                    points, degree, rms);
+        std::printf("%-22s Delaunay, %5zu points, normal of degree %d: interior RMS angle %.3e",
+                    functions[f].name.c_str(), points, degree, rms);
         if (step) {
           order = *step;
           std::printf(", order %.2f", order);

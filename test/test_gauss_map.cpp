@@ -45,7 +45,12 @@ using CGAL::Curvature_estimation::Vertex_normal_method;
 namespace CE = CGAL::Curvature_estimation;
 namespace params = CGAL::Curvature_estimation::parameters;
 
-enum class Method { gauss_map, taubin, chen_schmitt };
+enum class Method
+{
+  gauss_map,
+  taubin,
+  chen_schmitt
+};
 const Method all_methods[] = {Method::gauss_map, Method::taubin, Method::chen_schmitt};
 const char* name(Method m)
 {
@@ -58,9 +63,15 @@ template <typename ConcurrencyTag, typename NP>
 void call(Method method, const Mesh& mesh, const NP& np)
 {
   switch (method) {
-    case Method::gauss_map: CE::gauss_map_curvatures<ConcurrencyTag>(mesh, np); break;
-    case Method::taubin: CE::taubin_curvatures<ConcurrencyTag>(mesh, np); break;
-    case Method::chen_schmitt: CE::chen_schmitt_curvatures<ConcurrencyTag>(mesh, np); break;
+    case Method::gauss_map:
+      CE::gauss_map_curvatures<ConcurrencyTag>(mesh, np);
+      break;
+    case Method::taubin:
+      CE::taubin_curvatures<ConcurrencyTag>(mesh, np);
+      break;
+    case Method::chen_schmitt:
+      CE::chen_schmitt_curvatures<ConcurrencyTag>(mesh, np);
+      break;
   }
 }
 
@@ -138,8 +149,9 @@ TEST(Gauss_map, SphereWithExactNormalsConvergesToOneOverRadius)
       estimate(Method::gauss_map, mesh, paper_differential().vertex_normal_map(exact_normal_map(mesh, exact)));
     const Errors r = errors(e, exact);
     const double h = ce_test::mean_edge_length(soup);
-    std::printf("icosphere level %u (h %.4f), exact normals, per-face centroid weights: H RMS error %.3e, K RMS error %.3e", level, h,
-                r.mean.stats().rms, r.gaussian.stats().rms);
+    std::printf(
+      "icosphere level %u (h %.4f), exact normals, per-face centroid weights: H RMS error %.3e, K RMS error %.3e",
+      level, h, r.mean.stats().rms, r.gaussian.stats().rms);
     if (level > 1)
       std::printf(", order %.2f", ce_test::observed_order(previous_error, r.mean.stats().rms, previous_h, h));
     std::printf("\n");
@@ -171,7 +183,7 @@ TEST(Gauss_map, DefaultLeastSquaresIsExactOnSpheresWithExactNormals)
     }
   }
   const ce_test::Graph_function cap = ce_test::hamann_table1_functions()[2];
-  ASSERT_EQ(cap.name, "sphere");  // z = sqrt(4 - x^2 - y^2): radius 2, upward normals
+  ASSERT_EQ(cap.name, "sphere"); // z = sqrt(4 - x^2 - y^2): radius 2, upward normals
   std::vector<ce_test::Exact_curvature> exact;
   Mesh mesh = quad_grid(cap, 11, exact);
   const Estimates e = estimate(Method::gauss_map, mesh, params::vertex_normal_map(exact_normal_map(mesh, exact)));
@@ -190,9 +202,9 @@ TEST(Gauss_map, PerFaceAreaWeightsConvergeOnASphereWithExactNormals)
     const ce_test::Soup soup = ce_test::sphere_soup(radius, level);
     Mesh mesh = ce_test::to_mesh<Mesh>(soup);
     const auto exact = ce_test::sphere_curvatures(radius, soup);
-    const Estimates e = estimate(Method::gauss_map, mesh,
-                                 params::neighbor_weighting(Neighbor_weighting::area)
-                                   .vertex_normal_map(exact_normal_map(mesh, exact)));
+    const Estimates e =
+      estimate(Method::gauss_map, mesh,
+               params::neighbor_weighting(Neighbor_weighting::area).vertex_normal_map(exact_normal_map(mesh, exact)));
     const Errors r = errors(e, exact);
     std::printf("icosphere level %u, exact normals, per-face area weights: H RMS error %.3e\n", level,
                 r.mean.stats().rms);
@@ -212,10 +224,12 @@ TEST(Gauss_map, LeastSquaresDifferentialRecoversALinearNormalFieldExactly)
   std::mt19937 gen(5);
   for (int trial = 0; trial < 20; ++trial) {
     const Eigen::Vector3d normal =
-      Eigen::Vector3d(ce_test::uniform(gen, -1, 1), ce_test::uniform(gen, -1, 1), ce_test::uniform(gen, -1, 1)).normalized();
+      Eigen::Vector3d(ce_test::uniform(gen, -1, 1), ce_test::uniform(gen, -1, 1), ce_test::uniform(gen, -1, 1))
+        .normalized();
     const CE::internal::Tangent_frame tangents = CE::internal::tangent_basis<3>(normal);
     Eigen::Matrix2d a;
-    a << ce_test::uniform(gen, -3, 3), ce_test::uniform(gen, -3, 3), ce_test::uniform(gen, -3, 3), ce_test::uniform(gen, -3, 3);
+    a << ce_test::uniform(gen, -3, 3), ce_test::uniform(gen, -3, 3), ce_test::uniform(gen, -3, 3),
+      ce_test::uniform(gen, -3, 3);
     CE::internal::Gauss_map_least_squares fit, line;
     fit.clear();
     line.clear();
@@ -240,14 +254,16 @@ TEST(Gauss_map, PlaneGivesZeroForEveryEstimatorAndNormalChoice)
   const ce_test::Graph_function plane = ce_test::hamann_table1_functions()[0];
   ASSERT_EQ(plane.name, "plane");
   for (const ce_test::Soup& soup :
-       {ce_test::grid_graph_soup(plane, 9), ce_test::jittered_grid_graph_soup(plane, 9, -1, 1, 0.2, 5)}) {
+       {ce_test::grid_graph_soup(plane, 9), ce_test::jittered_grid_graph_soup(plane, 9, -1, 1, 0.2, 5)})
+  {
     Mesh mesh = ce_test::to_mesh<Mesh>(soup);
     const auto exact = ce_test::graph_curvatures(plane, soup);
     const auto normals = exact_normal_map(mesh, exact);
     for (Method method : all_methods) {
       const Estimates given = estimate(method, mesh, params::vertex_normal_map(normals));
       const Estimates fitted = estimate(method, mesh);
-      const Estimates centroid = estimate(method, mesh, params::vertex_normal_method(Vertex_normal_method::centroid_weighted));
+      const Estimates centroid =
+        estimate(method, mesh, params::vertex_normal_method(Vertex_normal_method::centroid_weighted));
       for (const Estimates* e : {&given, &fitted, &centroid})
         for (std::size_t i = 0; i < exact.size(); ++i) {
           if (e->status[i] == Estimation_status::not_estimable) {
@@ -386,19 +402,31 @@ TEST(Gauss_map, RandomPolynomialFansReproduceTheReferenceMedians)
   const auto start = std::chrono::steady_clock::now();
   std::mt19937 gen(20050901);
   auto uniform = [&](double lo, double hi) { return ce_test::uniform(gen, lo, hi); };
-  auto uniform_int = [&](int lo, int hi) { return lo + std::min(hi - lo, int((hi - lo + 1) * ce_test::uniform01(gen))); };
+  auto uniform_int = [&](int lo, int hi) {
+    return lo + std::min(hi - lo, int((hi - lo + 1) * ce_test::uniform01(gen)));
+  };
 
-  enum Setting { taubin_area, taubin_centroid, chen_schmitt, gauss_exact, gauss_centroid, gauss_exact_least_squares,
-                 gauss_default, settings };
-  const Reference reference[settings] = {{"Taubin, area weights", 0.957, 0.662},
-                                         {"Taubin, centroid weights", 1.015, 0.645},
-                                         {"Chen-Schmitt", 0.885, 0.564},
-                                         {"Gauss map, exact neighbor normals", 0.417, 0.243},
-                                         // The issue quotes "2.0" for Err(K) only, as an order of magnitude: printed, not checked.
-                                         {"Gauss map, centroid normals everywhere", 0, 0},
-                                         // Not the paper's: our default differential (least squares), printed.
-                                         {"Gauss map l.sq., exact neighbor normals", 0, 0},
-                                         {"Gauss map, our defaults", 0, 0}};
+  enum Setting
+  {
+    taubin_area,
+    taubin_centroid,
+    chen_schmitt,
+    gauss_exact,
+    gauss_centroid,
+    gauss_exact_least_squares,
+    gauss_default,
+    settings
+  };
+  const Reference reference[settings] = {
+    {"Taubin, area weights", 0.957, 0.662},
+    {"Taubin, centroid weights", 1.015, 0.645},
+    {"Chen-Schmitt", 0.885, 0.564},
+    {"Gauss map, exact neighbor normals", 0.417, 0.243},
+    // The issue quotes "2.0" for Err(K) only, as an order of magnitude: printed, not checked.
+    {"Gauss map, centroid normals everywhere", 0, 0},
+    // Not the paper's: our default differential (least squares), printed.
+    {"Gauss map l.sq., exact neighbor normals", 0, 0},
+    {"Gauss map, our defaults", 0, 0}};
   std::vector<double> err_K[settings], err_H[settings];
   std::size_t not_estimable[settings] = {};
 
@@ -456,7 +484,8 @@ TEST(Gauss_map, RandomPolynomialFansReproduceTheReferenceMedians)
       switch (setting) {
         case taubin_area:
           e = estimate(Method::taubin, mesh,
-                       params::vertex_normal_method(Vertex_normal_method::area_weighted).neighbor_weighting(Neighbor_weighting::area));
+                       params::vertex_normal_method(Vertex_normal_method::area_weighted)
+                         .neighbor_weighting(Neighbor_weighting::area));
           break;
         case taubin_centroid:
           e = estimate(Method::taubin, mesh,
@@ -468,7 +497,9 @@ TEST(Gauss_map, RandomPolynomialFansReproduceTheReferenceMedians)
                        params::vertex_normal_method(Vertex_normal_method::centroid_weighted)
                          .neighbor_weighting(Neighbor_weighting::uniform));
           break;
-        case gauss_exact: e = estimate(Method::gauss_map, mesh, paper_differential().vertex_normal_map(normals)); break;
+        case gauss_exact:
+          e = estimate(Method::gauss_map, mesh, paper_differential().vertex_normal_map(normals));
+          break;
         case gauss_centroid:
           e = estimate(Method::gauss_map, mesh,
                        paper_differential().vertex_normal_method(Vertex_normal_method::centroid_weighted));
@@ -476,7 +507,9 @@ TEST(Gauss_map, RandomPolynomialFansReproduceTheReferenceMedians)
         case gauss_exact_least_squares:
           e = estimate(Method::gauss_map, mesh, params::vertex_normal_map(normals));
           break;
-        default: e = estimate(Method::gauss_map, mesh); break;
+        default:
+          e = estimate(Method::gauss_map, mesh);
+          break;
       }
       for (vertex_descriptor c : centres) {
         if (e.status[std::size_t(c)] == Estimation_status::not_estimable) {
@@ -521,7 +554,8 @@ TEST(Gauss_map, JitteredTorusWithExactNormalsConvergesToFirstOrderAtLeast)
     const ce_test::Soup soup = ce_test::torus_soup(R, r, n, n / 2, 0.2, 11);
     Mesh mesh = ce_test::to_mesh<Mesh>(soup);
     const auto exact = ce_test::torus_curvatures(R, r, soup);
-    const Errors e = errors(estimate(Method::gauss_map, mesh, params::vertex_normal_map(exact_normal_map(mesh, exact))), exact);
+    const Errors e =
+      errors(estimate(Method::gauss_map, mesh, params::vertex_normal_map(exact_normal_map(mesh, exact))), exact);
     const double h = ce_test::mean_edge_length(soup);
     std::printf("jittered torus %zux%zu (h %.4f), exact normals: H RMS %.3e, K RMS %.3e", n, n / 2, h,
                 e.mean.stats().rms, e.gaussian.stats().rms);
@@ -606,14 +640,15 @@ TEST(Gauss_map, ErrorWithEachNormalChoiceOnRegularAndJitteredTorus)
 // (a pack of parameters) estimates every vertex, and the RMS error of H over all vertices and over
 // the boundary vertices falls by a factor 0.6 at least at each refinement.
 template <typename Differential>
-void expect_quad_grids_converge_with_exact_normals(const ce_test::Graph_function& surface, const char* differential_name,
-                                                   const Differential& differential)
+void expect_quad_grids_converge_with_exact_normals(const ce_test::Graph_function& surface,
+                                                   const char* differential_name, const Differential& differential)
 {
   double previous_boundary = std::numeric_limits<double>::infinity(), previous_all = previous_boundary;
   for (std::size_t n : {11, 21, 41}) {
     std::vector<ce_test::Exact_curvature> exact;
     Mesh mesh = quad_grid(surface, n, exact);
-    const Estimates e = estimate(Method::gauss_map, mesh, differential.vertex_normal_map(exact_normal_map(mesh, exact)));
+    const Estimates e =
+      estimate(Method::gauss_map, mesh, differential.vertex_normal_map(exact_normal_map(mesh, exact)));
     ce_test::Error_accumulator boundary, all;
     for (vertex_descriptor v : vertices(mesh)) {
       const std::size_t i = std::size_t(v);
@@ -657,7 +692,8 @@ TEST(Gauss_map, DefaultNormalsWorkOnQuadFacesWithBoundary)
     ASSERT_EQ(e.status[i], Estimation_status::ok);
     all.add(exact[i].H, e.mean[i]);
   }
-  std::printf("quad grid 21x21 of the sphere cap, default normals: H RMS %.3e (H = %.2f)\n", all.stats().rms, exact[0].H);
+  std::printf("quad grid 21x21 of the sphere cap, default normals: H RMS %.3e (H = %.2f)\n", all.stats().rms,
+              exact[0].H);
   EXPECT_LT(all.stats().rms, 0.05 * exact[0].H);
 }
 
@@ -684,9 +720,9 @@ TEST(Gauss_map, IsolatedAndNaNVerticesAreNotEstimableWithoutHarmingNeighbors)
     Mesh empty;
     EXPECT_NO_THROW(estimate(method, empty));
   }
-  EXPECT_THROW(CE::gauss_map_curvatures(mesh, params::vertex_mean_curvature_map(
-                                                 mesh.add_property_map<vertex_descriptor, double>("v:h").first)
-                                                 .neighborhood_rings(0)),
+  EXPECT_THROW(CE::gauss_map_curvatures(
+                 mesh, params::vertex_mean_curvature_map(mesh.add_property_map<vertex_descriptor, double>("v:h").first)
+                         .neighborhood_rings(0)),
                std::invalid_argument);
   // Each function refuses the weightings it does not define.
   EXPECT_THROW(CE::gauss_map_curvatures(mesh, params::neighbor_weighting(Neighbor_weighting::uniform)),

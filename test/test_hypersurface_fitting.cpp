@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Hamann's paraboloid fitting on tetrahedral hypersurfaces of R^4 (thesis §4.3):
 // the reproduction of Table 4.2, convergence, invariance, complex-type independence.
-#include <CGAL/Curvature_estimation/hypersurface_paraboloid_fitting.h>
 #include <CGAL/Curvature_estimation/Tetrahedral_complex_traits.h>
+#include <CGAL/Curvature_estimation/hypersurface_paraboloid_fitting.h>
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Epick_d.h>
@@ -45,7 +45,7 @@ struct Function
   std::function<double(const Eigen::Vector3d&)> f;
   std::function<Eigen::Vector3d(const Eigen::Vector3d&)> gradient;
   std::function<Eigen::Matrix3d(const Eigen::Vector3d&)> hessian;
-  double thesis_H, thesis_K;  // Table 4.2
+  double thesis_H, thesis_K; // Table 4.2
 };
 
 std::vector<Function> table_functions()
@@ -115,7 +115,7 @@ Eigen::Vector3d exact_curvatures(const Function& fn, const Eigen::Vector3d& p)
   const Eigen::Matrix3d inv_sqrt = m.operatorInverseSqrt();
   const double l = std::sqrt(1 + g.squaredNorm());
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> s(inv_sqrt * fn.hessian(p) * inv_sqrt / l);
-  const Eigen::Vector3d e = s.eigenvalues();  // ascending
+  const Eigen::Vector3d e = s.eigenvalues(); // ascending
   return Eigen::Vector3d(-e[0], -e[1], -e[2]);
 }
 
@@ -276,10 +276,7 @@ void expect_table_4_2_within(Rms Table_row::*normals, double factor)
   }
 }
 
-TEST(Hypersurface_table_4_2, ExactNormalsWithin1_5TimesTheThesis)
-{
-  expect_table_4_2_within(&Table_row::exact, 1.5);
-}
+TEST(Hypersurface_table_4_2, ExactNormalsWithin1_5TimesTheThesis) { expect_table_4_2_within(&Table_row::exact, 1.5); }
 
 TEST(Hypersurface_table_4_2, DefaultEstimatedNormalsWithin2TimesTheThesis)
 {
@@ -442,7 +439,8 @@ void check_invariance(const Eigen::Matrix4d& Q, const Eigen::Vector4d& t, double
   const Result b = run(moved, CE::parameters::default_values());
   for (std::size_t v = 0; v < g.domain.size(); ++v) {
     ASSERT_EQ(a.status[v], b.status[v]);
-    const double tolerance = 1e-9 * (1 + std::abs(a.principal[v].max_curvature) + std::abs(a.principal[v].min_curvature));
+    const double tolerance =
+      1e-9 * (1 + std::abs(a.principal[v].max_curvature) + std::abs(a.principal[v].min_curvature));
     EXPECT_NEAR(s * b.principal[v].max_curvature, a.principal[v].max_curvature, tolerance);
     EXPECT_NEAR(s * b.principal[v].mid_curvature, a.principal[v].mid_curvature, tolerance);
     EXPECT_NEAR(s * b.principal[v].min_curvature, a.principal[v].min_curvature, tolerance);
@@ -465,14 +463,14 @@ Eigen::Matrix4d random_rotation(unsigned seed)
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j)
       m(i, j) = random.get_double(-1, 1);
-  Eigen::Matrix4d Q = m;  // Gram-Schmidt
+  Eigen::Matrix4d Q = m; // Gram-Schmidt
   for (int j = 0; j < 4; ++j) {
     for (int i = 0; i < j; ++i)
       Q.col(j) -= Q.col(i).dot(Q.col(j)) * Q.col(i);
     Q.col(j).normalize();
   }
   if (Q.determinant() < 0)
-    Q.col(0) *= -1;  // a proper rotation: orientation, hence the normals' side, is kept
+    Q.col(0) *= -1; // a proper rotation: orientation, hence the normals' side, is kept
   return Q;
 }
 
@@ -518,7 +516,8 @@ TEST(Hypersurface_paraboloid_fitting, Triangulation3AndIndexedMeshGiveTheSameNum
   for (int k = 0; k < 8; ++k)
     for (int j = 0; j < 8; ++j)
       for (int i = 0; i < 8; ++i)
-        points.emplace_back(-1 + i / 3.5 + random.get_double(-0.05, 0.05), -1 + j / 3.5 + random.get_double(-0.05, 0.05),
+        points.emplace_back(-1 + i / 3.5 + random.get_double(-0.05, 0.05),
+                            -1 + j / 3.5 + random.get_double(-0.05, 0.05),
                             -1 + k / 3.5 + random.get_double(-0.05, 0.05));
   const Tr tr(points.begin(), points.end());
 
@@ -604,7 +603,7 @@ TEST(Hypersurface_paraboloid_fitting, NotEstimableVerticesGetNaNAndStatus)
   const Function fn = table_functions()[1];
   Grid g = make_grid(6, fn);
   Mesh mesh = g.mesh;
-  const std::size_t bad = 3 * 36 + 3 * 6 + 3;  // interior vertex (3,3,3)
+  const std::size_t bad = 3 * 36 + 3 * 6 + 3; // interior vertex (3,3,3)
   mesh.points[bad][3] = std::numeric_limits<double>::quiet_NaN();
   const std::size_t isolated = mesh.points.size();
   mesh.points.push_back({5, 5, 5, 5});
@@ -615,7 +614,7 @@ TEST(Hypersurface_paraboloid_fitting, NotEstimableVerticesGetNaNAndStatus)
   for (bool given : {false, true}) {
     std::vector<Point4> normals(mesh.points.size(), Point4{0, 0, 0, 1});
     const Result r = given ? run(mesh, CE::parameters::vertex_normal_map(CGAL::make_property_map(normals)))
-                        : run(mesh, CE::parameters::default_values());
+                           : run(mesh, CE::parameters::default_values());
     for (std::size_t v : {bad, isolated, tet, tet + 1, tet + 2, tet + 3}) {
       SCOPED_TRACE(v);
       EXPECT_EQ(r.status[v], Status::not_estimable);

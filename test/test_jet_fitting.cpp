@@ -51,7 +51,7 @@ TEST(Jet_fitting, SphereHasPositiveCurvatureOneOverRadiusAndConverges)
     ce_test::Error_accumulator mean_error;
     for (std::size_t i = 0; i < e.mean.size(); ++i) {
       ASSERT_NE(e.status[i], Estimation_status::not_estimable);
-      EXPECT_GT(e.principal[i].min_curvature, 0);  // outward normals: positive
+      EXPECT_GT(e.principal[i].min_curvature, 0); // outward normals: positive
       EXPECT_GE(e.principal[i].max_curvature, e.principal[i].min_curvature);
       mean_error.add(1 / radius, e.mean[i]);
     }
@@ -100,7 +100,8 @@ TEST(Jet_fitting, WideningOnTheConditionNumberRemovesTheGridBoundaryGarbage)
   const double garbage = ce_test::curvature_errors(accepted_all, exact, fitted_on_border).mean.stats().max;
   const double fixed = ce_test::curvature_errors(widened, exact, fitted_on_border).mean.stats().max;
   std::printf("jet d=4 on the boundary of a 31x31 grid: max H error %.3g without the condition test, %.3g with it "
-              "(%zu vertices not estimable with it)\n", garbage, fixed, not_estimable);
+              "(%zu vertices not estimable with it)\n",
+              garbage, fixed, not_estimable);
   EXPECT_GT(garbage, 10 * fixed);
   EXPECT_LT(fixed, 0.1);
 }
@@ -113,9 +114,10 @@ TEST(Jet_fitting, OnAnIrregularMeshDegreeTwoIsFirstOrderAndDegreeFourHigher)
   for (int n : {60, 120, 240}) {
     const auto [soup, mesh, exact] = ce_test::sampled_torus<Mesh>(R, r, n, n / 2, 0.2, 5);
     const double d2 = ce_test::curvature_errors(estimate(mesh, params::default_values()), exact).mean.stats().rms;
-    const double d4 = ce_test::curvature_errors(
-                        estimate(mesh, params::jet_degree(4).monge_degree(4).neighborhood_rings(3)), exact)
-                        .mean.stats().rms;
+    const double d4 =
+      ce_test::curvature_errors(estimate(mesh, params::jet_degree(4).monge_degree(4).neighborhood_rings(3)), exact)
+        .mean.stats()
+        .rms;
     std::printf("jet on a jittered %dx%d torus: H RMS %.2e (d=2, 1-ring), %.2e (d=4, 3-ring)\n", n, n / 2, d2, d4);
     if (previous_d2 > 0) {
       // Halving the spacing: order log2 of the error ratio.
@@ -168,8 +170,8 @@ TEST(Jet_fitting, WhereCgalsFitIsIllConditionedOnEveryRingItFallsBackToTheParabo
 #ifdef CGAL_LINKED_WITH_TBB
 TEST(Jet_fitting, SequentialAndParallelAreIdentical)
 {
-  const Mesh mesh = ce_test::to_mesh<Mesh>(
-    ce_test::jittered_grid_graph_soup(ce_test::hamann_table1_functions()[7], 60, -1, 1, 0.2, 9));
+  const Mesh mesh =
+    ce_test::to_mesh<Mesh>(ce_test::jittered_grid_graph_soup(ce_test::hamann_table1_functions()[7], 60, -1, 1, 0.2, 9));
   const Estimates sequential = estimate<CGAL::Sequential_tag>(mesh, params::default_values());
   const Estimates parallel = estimate<CGAL::Parallel_tag>(mesh, params::default_values());
   for (std::size_t i = 0; i < sequential.status.size(); ++i) {
@@ -179,4 +181,4 @@ TEST(Jet_fitting, SequentialAndParallelAreIdentical)
 }
 #endif
 
-}  // namespace
+} // namespace

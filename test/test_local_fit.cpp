@@ -51,7 +51,9 @@ using Vec = Eigen::Matrix<double, N, 1>;
 class Random
 {
 public:
-  explicit Random(std::uint32_t seed) : gen_(seed) {}
+  explicit Random(std::uint32_t seed)
+      : gen_(seed)
+  {}
 
   double uniform(double lo, double hi) { return ce_test::uniform(gen_, lo, hi); }
 
@@ -255,13 +257,12 @@ void add_samples(CEI::Taylor_fit<D, F, L>& fit, const std::vector<Vec<D>>& xs, c
 // for an eigenvector a of M.
 struct Exact_graph_curvature
 {
-  std::array<double, 2> curvatures;      // decreasing
-  std::array<Vec<3>, 2> directions;      // unit
+  std::array<double, 2> curvatures; // decreasing
+  std::array<Vec<3>, 2> directions; // unit
   Vec<3> normal;
 };
 
-Exact_graph_curvature exact_graph_curvature(const Mat<2, 2>& c, const Vec<2>& g, const Mat<3, 2>& t,
-                                            const Vec<3>& n)
+Exact_graph_curvature exact_graph_curvature(const Mat<2, 2>& c, const Vec<2>& g, const Mat<3, 2>& t, const Vec<3>& n)
 {
   const long double g0 = g[0], g1 = g[1];
   const long double l2 = 1.0L + g0 * g0 + g1 * g1;
@@ -427,8 +428,9 @@ void check_tangent_basis(std::uint32_t seed)
     full << t, n;
     EXPECT_NEAR(std::abs(full.determinant()), 1.0, 1e-13) << "n = " << n.transpose();
   }
-  std::cout << "tangent_basis<" << N << ">: " << normals.size() << " normals, max |T^T T - I| = "
-            << worst_orthonormality << ", max |T^T n| = " << worst_orthogonality << "\n";
+  std::cout << "tangent_basis<" << N << ">: " << normals.size()
+            << " normals, max |T^T T - I| = " << worst_orthonormality << ", max |T^T n| = " << worst_orthogonality
+            << "\n";
 }
 
 TEST(TangentBasis, OrthonormalAndOrthogonalToNormalIn3D) { check_tangent_basis<3>(11); }
@@ -516,8 +518,8 @@ TEST(HamannFit, RecoversParaboloidAndCurvaturesInRotatedFrames)
       check_curvature(other, "turned frame");
     }
   }
-  std::cout << "Hamann fit: max |Hessian error| " << worst_coefficient << ", max |curvature error| "
-            << worst_curvature << ", max direction error " << worst_direction << "\n";
+  std::cout << "Hamann fit: max |Hessian error| " << worst_coefficient << ", max |curvature error| " << worst_curvature
+            << ", max direction error " << worst_direction << "\n";
 }
 
 TEST(HamannFit, PlaneGivesZeroCurvature)
@@ -528,7 +530,8 @@ TEST(HamannFit, PlaneGivesZeroCurvature)
     const Frame<3> frame = test_frame<3>(random, trial);
     const Mat<3, 2> t = CEI::tangent_basis<3>(frame.normal());
     CEI::Taylor_fit<2, 2, 2> fit;
-    add_samples(fit, xs, [](const Vec<2>&) { return 0.0; }, frame, t);
+    add_samples(
+      fit, xs, [](const Vec<2>&) { return 0.0; }, frame, t);
     ASSERT_TRUE(fit.solve(1e3)) << "trial " << trial;
     const CEI::Graph_curvature<3> gc = CEI::graph_curvature<3>(fit.hessian(), fit.gradient(), t, frame.normal());
     EXPECT_LE(gc.curvatures.cwiseAbs().maxCoeff(), 1e-14) << "trial " << trial;
@@ -564,7 +567,8 @@ TEST(GraphCurvature, ClosedFormOfTiltedGraph)
   // z = g.x + 1/2 x^T C x at the origin.
   Random random(31);
   for (int trial = 0; trial < 200; ++trial) {
-    const Mat<2, 2> c = symmetric_from<2>(separated_eigenvalues<2>(random, -3, 3, 0.2), rotation2(random.uniform(0, pi)));
+    const Mat<2, 2> c =
+      symmetric_from<2>(separated_eigenvalues<2>(random, -3, 3, 0.2), rotation2(random.uniform(0, pi)));
     const Vec<2> g = random.in_cube<2>(trial < 100 ? 1.0 : 5.0);
     const Vec<3> n = trial == 0 ? Vec<3>::UnitZ() : random.unit_vector<3>();
     const Mat<3, 2> t = CEI::tangent_basis<3>(n);
@@ -594,11 +598,14 @@ void check_gradient_fit(std::uint32_t seed, double tolerance)
   double worst = 0;
   for (int trial = 0; trial < 60; ++trial) {
     constexpr int unknowns = CEI::Taylor_fit<2, F, L>::unknowns;
-    static_assert(unknowns == (F == 0 ? 1 : 0) + (L == 2 ? 5 : L == 3 ? 9 : 14),
+    static_assert(unknowns == (F == 0 ? 1 : 0) + (L == 2   ? 5
+                                                  : L == 3 ? 9
+                                                           : 14),
                   "[1 constant +] 2 gradient + 3 Hessian [+ 4 cubic [+ 5 quartic]] unknowns");
     const int m = unknowns + 2 + trial % 10;
     const double offset = F == 0 ? random.uniform(-1, 1) : 0.0;
-    const Mat<2, 2> c = symmetric_from<2>(separated_eigenvalues<2>(random, -3, 3, 0.2), rotation2(random.uniform(0, pi)));
+    const Mat<2, 2> c =
+      symmetric_from<2>(separated_eigenvalues<2>(random, -3, 3, 0.2), rotation2(random.uniform(0, pi)));
     const Vec<2> g = random.in_cube<2>();
     std::array<double, 4> e{}; // cubic coefficients of x^3, x^2 y, x y^2, y^3
     std::array<double, 5> f{}; // quartic coefficients of x^4, x^3 y, x^2 y^2, x y^3, y^4
@@ -610,8 +617,9 @@ void check_gradient_fit(std::uint32_t seed, double tolerance)
         coefficient = random.uniform(-2, 2);
     const auto height = [&](const Vec<2>& x) {
       const double u = x[0], v = x[1];
-      return offset + g.dot(x) + 0.5 * x.dot(c * x) + e[0] * u * u * u + e[1] * u * u * v + e[2] * u * v * v + e[3] * v * v * v +
-             f[0] * u * u * u * u + f[1] * u * u * u * v + f[2] * u * u * v * v + f[3] * u * v * v * v + f[4] * v * v * v * v;
+      return offset + g.dot(x) + 0.5 * x.dot(c * x) + e[0] * u * u * u + e[1] * u * u * v + e[2] * u * v * v +
+             e[3] * v * v * v + f[0] * u * u * u * u + f[1] * u * u * u * v + f[2] * u * u * v * v +
+             f[3] * u * v * v * v + f[4] * v * v * v * v;
     };
     const std::vector<Vec<2>> xs = spread_stencil_2d(random, m, 0.3, 1.0);
     const Frame<3> frame = test_frame<3>(random, trial);
@@ -686,7 +694,8 @@ TEST(GradientFit, SlopedPlaneGivesZeroCurvature)
 
     // And Hamann's fit of the level plane through the same frame (h = 0).
     CEI::Taylor_fit<2, 2, 2> level;
-    add_samples(level, spread_stencil_2d(random, 6), [](const Vec<2>&) { return 0.0; }, frame, t);
+    add_samples(
+      level, spread_stencil_2d(random, 6), [](const Vec<2>&) { return 0.0; }, frame, t);
     ASSERT_TRUE(level.solve(1e3));
     EXPECT_LE(level.hessian().cwiseAbs().maxCoeff(), 1e-14);
   }
@@ -884,7 +893,8 @@ TEST(Conditioning, FewerSamplesThanUnknownsAreRejected)
 TEST(Conditioning, Valence6StencilIsWellConditioned)
 {
   // The 6 neighbors of a valence-6 vertex of a triangulated grid.
-  const std::vector<Vec<2>> xs = {Vec<2>(1, 0), Vec<2>(-1, 0), Vec<2>(0, 1), Vec<2>(0, -1), Vec<2>(1, -1), Vec<2>(-1, 1)};
+  const std::vector<Vec<2>> xs = {Vec<2>(1, 0),  Vec<2>(-1, 0), Vec<2>(0, 1),
+                                  Vec<2>(0, -1), Vec<2>(1, -1), Vec<2>(-1, 1)};
   CEI::Taylor_fit<2, 2, 2> fit;
   for (const Vec<2>& x : xs)
     fit.add(x, 0.5 * (0.3 * x[0] * x[0] - 2 * 0.2 * x[0] * x[1] + 0.7 * x[1] * x[1]));
@@ -898,7 +908,8 @@ TEST(Conditioning, Valence6StencilIsWellConditioned)
   const long double r = 1 / std::sqrt(2.0L);
   EXPECT_NEAR(static_cast<double>(one_norm_condition({{1, -r, 0.5L}, {-r, 1, -r}, {0.5L, -r, 1}})), expected,
               1e-12 * expected);
-  EXPECT_NEAR(fit.condition_number(), static_cast<double>(independent_condition<2>(xs, 2, 2)), 1e-12 * fit.condition_number());
+  EXPECT_NEAR(fit.condition_number(), static_cast<double>(independent_condition<2>(xs, 2, 2)),
+              1e-12 * fit.condition_number());
   EXPECT_LT(fit.condition_number(), 100);
   std::cout << "valence-6 stencil: condition number " << fit.condition_number() << "\n";
   EXPECT_NEAR(fit.hessian()(0, 0), 0.3, 1e-15);
@@ -941,7 +952,8 @@ void check_scale_invariance(Random& random)
 {
   for (int trial = 0; trial < 10; ++trial) {
     const std::vector<Vec<2>> xs = spread_stencil_2d(random, CEI::Taylor_fit<2, F, L>::unknowns + 3, 0.3, 1.0);
-    const Mat<2, 2> c = symmetric_from<2>(separated_eigenvalues<2>(random, -3, 3, 0.2), rotation2(random.uniform(0, pi)));
+    const Mat<2, 2> c =
+      symmetric_from<2>(separated_eigenvalues<2>(random, -3, 3, 0.2), rotation2(random.uniform(0, pi)));
     const Vec<2> g = F == 1 ? Vec<2>(random.in_cube<2>()) : Vec<2>::Zero();
     const double e = L == 3 ? random.uniform(-1, 1) : 0.0;
     const auto height = [&](const Vec<2>& x) { return g.dot(x) + 0.5 * x.dot(c * x) + e * x[0] * x[0] * x[1]; };
@@ -1055,8 +1067,7 @@ struct Samples
 // (Hamann's, the normal's, the boundary normal's cubic one; D = 2 and 3).
 template <int D, int F, int L>
 struct Orders
-{
-};
+{};
 
 template <typename Check>
 void for_each_fit(const Check& check)
@@ -1192,10 +1203,7 @@ long double whitened_quadratic_only_condition(const std::vector<Vec<2>>& xs)
 // Rounding bound of a fit accepted by test (b) on a stencil stretched by 100:
 // the coefficients across the stretch are those fitted in y (error a few machine
 // epsilons times cond_1(N_y)) times the stretch squared.
-double stretched_fit_tolerance(double whitened_condition)
-{
-  return 1e-15 * whitened_condition * 100 * 100;
-}
+double stretched_fit_tolerance(double whitened_condition) { return 1e-15 * whitened_condition * 100 * 100; }
 
 // A stencil stretched by 100 and turned is refused by test (a) and accepted by
 // test (b), which recovers the polynomial exactly: the least-squares problem is
@@ -1234,8 +1242,9 @@ void check_stretched_stencil(Random& random, Orders<D, F, L>)
     EXPECT_LE(fit.whitened_condition_number(), n2 * round_condition) << "trial " << trial;
     EXPECT_LE(round_condition, n2 * fit.whitened_condition_number()) << "trial " << trial;
   }
-  std::cout << "Taylor_fit<" << D << "," << F << "," << L << ">, 1-rings stretched by 100: condition (a) >= "
-            << least_scaled << ", (b) <= " << worst_whitened << ", max relative coefficient error " << worst << "\n";
+  std::cout << "Taylor_fit<" << D << "," << F << "," << L
+            << ">, 1-rings stretched by 100: condition (a) >= " << least_scaled << ", (b) <= " << worst_whitened
+            << ", max relative coefficient error " << worst << "\n";
 }
 
 TEST(WhitenedConditioning, StretchedStencilIsAcceptedWithTheExactPolynomial)
@@ -1387,9 +1396,12 @@ TEST(WhitenedConditioning, SamplesOnALineAreRefused)
         for (double s : ts)
           samples.push(s * d + offset * Vec<2>(-d[1], d[0]), 0.5 * s * s);
         double condition = 0;
-        EXPECT_FALSE((samples.whitened<CEI::Taylor_fit<2, 2, 2>>(1e12, condition))) << "offset " << offset << ", " << condition;
-        EXPECT_FALSE((samples.whitened<CEI::Taylor_fit<2, 1, 2>>(1e12, condition))) << "offset " << offset << ", " << condition;
-        EXPECT_FALSE((samples.whitened<CEI::Taylor_fit<2, 1, 3>>(1e12, condition))) << "offset " << offset << ", " << condition;
+        EXPECT_FALSE((samples.whitened<CEI::Taylor_fit<2, 2, 2>>(1e12, condition)))
+          << "offset " << offset << ", " << condition;
+        EXPECT_FALSE((samples.whitened<CEI::Taylor_fit<2, 1, 2>>(1e12, condition)))
+          << "offset " << offset << ", " << condition;
+        EXPECT_FALSE((samples.whitened<CEI::Taylor_fit<2, 1, 3>>(1e12, condition)))
+          << "offset " << offset << ", " << condition;
       }
 }
 
@@ -1415,7 +1427,8 @@ TEST(WhitenedConditioning, TiltedLineStencilsAreRefused)
       EXPECT_LT(quadratic_only, 1e3) << "angle " << angle << ", tilt " << tilt;
       double hamann = 0, quadratic = 0;
       EXPECT_FALSE((samples.whitened<CEI::Taylor_fit<2, 2, 2>>(1e3, hamann))) << "angle " << angle << ", tilt " << tilt;
-      EXPECT_FALSE((samples.whitened<CEI::Taylor_fit<2, 1, 2>>(1e3, quadratic))) << "angle " << angle << ", tilt " << tilt;
+      EXPECT_FALSE((samples.whitened<CEI::Taylor_fit<2, 1, 2>>(1e3, quadratic)))
+        << "angle " << angle << ", tilt " << tilt;
       std::cout << "great circle at " << angle << " rad, tilt " << tilt << ": whitened condition " << hamann
                 << " (Hamann's quadratic terms alone: " << quadratic_only << ")\n";
     }
@@ -1614,7 +1627,8 @@ void check_subtract_curvature_quartic(Random& random, Orders<D, F, L>)
         fit.subtract_curvature_quartic();
         const double size = (std::max)(fresh.hessian().cwiseAbs().maxCoeff(), fresh.gradient().cwiseAbs().maxCoeff());
         const double difference = (std::max)((fit.hessian() - fresh.hessian()).cwiseAbs().maxCoeff(),
-                                             (fit.gradient() - fresh.gradient()).cwiseAbs().maxCoeff()) / size;
+                                             (fit.gradient() - fresh.gradient()).cwiseAbs().maxCoeff()) /
+                                  size;
         EXPECT_LE(difference, 1e-12) << "trial " << trial << ", stretch " << stretch;
         // The correction changes the fit: the test could tell.
         EXPECT_GT((first_hessian - fresh.hessian()).cwiseAbs().maxCoeff(), 1e-3 * size) << "trial " << trial;
@@ -1637,7 +1651,7 @@ template <int D>
 void check_curvature_quartic(Random& random)
 {
   for (int trial = 0; trial < 20; ++trial) {
-    const int k = 1 + trial % D;  // the sphere's dimension: k = D is a sphere, k < D a cylinder
+    const int k = 1 + trial % D; // the sphere's dimension: k = D is a sphere, k < D a cylinder
     const double r = random.uniform(0.5, 2.0);
     const Mat<D, D> q = random.rotation<D>();
     const Mat<D, D> projection = q.leftCols(k) * q.leftCols(k).transpose();

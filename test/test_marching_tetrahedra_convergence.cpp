@@ -59,21 +59,30 @@ const std::vector<Estimator>& estimators()
 {
   const auto defaults = params::default_values();
   static const std::vector<Estimator> all = {
-      estimator("paraboloid_fitting", [](const Mesh& m, const auto& np) { CE::paraboloid_fitting_curvatures(m, np); },
-                defaults),
-      estimator("paraboloid d3", [](const Mesh& m, const auto& np) { CE::paraboloid_fitting_curvatures(m, np); },
-                params::fit_degree(3)),
-      estimator("paraboloid d4", [](const Mesh& m, const auto& np) { CE::paraboloid_fitting_curvatures(m, np); },
-                params::fit_degree(4)),
-      estimator("curve_network", [](const Mesh& m, const auto& np) { CE::curve_network_curvatures(m, np); }, defaults),
-      estimator("gauss_map", [](const Mesh& m, const auto& np) { CE::gauss_map_curvatures(m, np); }, defaults),
-      estimator("gauss_map paper", [](const Mesh& m, const auto& np) { CE::gauss_map_curvatures(m, np); },
-                params::neighbor_weighting(CE::Neighbor_weighting::centroid)),
-      estimator("taubin", [](const Mesh& m, const auto& np) { CE::taubin_curvatures(m, np); }, defaults),
-      estimator("chen_schmitt", [](const Mesh& m, const auto& np) { CE::chen_schmitt_curvatures(m, np); }, defaults),
-      estimator("jet_fitting", [](const Mesh& m, const auto& np) { CE::jet_fitting_curvatures(m, np); }, defaults),
-      estimator("jet_fitting d4 3 rings", [](const Mesh& m, const auto& np) { CE::jet_fitting_curvatures(m, np); },
-                params::jet_degree(4).neighborhood_rings(3), 2)};
+    estimator(
+      "paraboloid_fitting", [](const Mesh& m, const auto& np) { CE::paraboloid_fitting_curvatures(m, np); }, defaults),
+    estimator(
+      "paraboloid d3", [](const Mesh& m, const auto& np) { CE::paraboloid_fitting_curvatures(m, np); },
+      params::fit_degree(3)),
+    estimator(
+      "paraboloid d4", [](const Mesh& m, const auto& np) { CE::paraboloid_fitting_curvatures(m, np); },
+      params::fit_degree(4)),
+    estimator(
+      "curve_network", [](const Mesh& m, const auto& np) { CE::curve_network_curvatures(m, np); }, defaults),
+    estimator(
+      "gauss_map", [](const Mesh& m, const auto& np) { CE::gauss_map_curvatures(m, np); }, defaults),
+    estimator(
+      "gauss_map paper", [](const Mesh& m, const auto& np) { CE::gauss_map_curvatures(m, np); },
+      params::neighbor_weighting(CE::Neighbor_weighting::centroid)),
+    estimator(
+      "taubin", [](const Mesh& m, const auto& np) { CE::taubin_curvatures(m, np); }, defaults),
+    estimator(
+      "chen_schmitt", [](const Mesh& m, const auto& np) { CE::chen_schmitt_curvatures(m, np); }, defaults),
+    estimator(
+      "jet_fitting", [](const Mesh& m, const auto& np) { CE::jet_fitting_curvatures(m, np); }, defaults),
+    estimator(
+      "jet_fitting d4 3 rings", [](const Mesh& m, const auto& np) { CE::jet_fitting_curvatures(m, np); },
+      params::jet_degree(4).neighborhood_rings(3), 2)};
   return all;
 }
 
@@ -150,7 +159,8 @@ std::vector<Row> measure(const ce_test::Implicit_surface& surface)
     }
   }
   std::printf("%-9s %-23s", "surface", "estimator");
-  for (std::size_t level : levels) std::printf("  %3zu: H RMS    H max   n/e", level);
+  for (std::size_t level : levels)
+    std::printf("  %3zu: H RMS    H max   n/e", level);
   std::printf("  order RMS  max\n");
   for (const Row& r : rows) {
     std::printf("%-9s %-23s", r.surface.c_str(), r.estimator.c_str());
@@ -172,7 +182,8 @@ void expect_converges(const std::vector<Row>& rows, const std::string& estimator
   for (const Row& r : rows)
     if (r.estimator == estimator) {
       SCOPED_TRACE(r.surface + ", " + r.estimator);
-      for (std::size_t l = 0; all_estimated && l < r.measured_levels; ++l) EXPECT_EQ(r.level[l].not_estimated, 0u);
+      for (std::size_t l = 0; all_estimated && l < r.measured_levels; ++l)
+        EXPECT_EQ(r.level[l].not_estimated, 0u);
       EXPECT_GE(r.rms_order(), min_order);
     }
 }
@@ -190,7 +201,8 @@ void expect_gauss_map_converges(const std::vector<Row>& rows)
   for (const Row& r : rows)
     if (r.estimator == "gauss_map") {
       SCOPED_TRACE(r.surface + ", " + r.estimator);
-      for (std::size_t l = 1; l < r.measured_levels; ++l) EXPECT_LT(r.level[l].H.rms, r.level[l - 1].H.rms) << l;
+      for (std::size_t l = 1; l < r.measured_levels; ++l)
+        EXPECT_LT(r.level[l].H.rms, r.level[l - 1].H.rms) << l;
       EXPECT_LT(r.level[r.measured_levels - 1].H.rms, r.h[r.measured_levels - 1]);
     }
 }
@@ -209,12 +221,14 @@ void expect_curve_network_says_where_it_falls_back(const std::vector<Row>& rows)
     if (r.estimator == "curve_network") {
       SCOPED_TRACE(r.surface + ", " + r.estimator);
       const std::size_t f = n_levels - 1;
-      const double order = ce_test::observed_order(r.level[f - 1].H_fallback.rms, r.level[f].H_fallback.rms,
-                                                   r.h[f - 1], r.h[f]);
+      const double order =
+        ce_test::observed_order(r.level[f - 1].H_fallback.rms, r.level[f].H_fallback.rms, r.h[f - 1], r.h[f]);
       std::printf("%-9s curve network: fallback vertices' H RMS", r.surface.c_str());
-      for (std::size_t l = 0; l < n_levels; ++l) std::printf(" %.3e (%zu)", r.level[l].H_fallback.rms, r.level[l].H_fallback.count);
+      for (std::size_t l = 0; l < n_levels; ++l)
+        std::printf(" %.3e (%zu)", r.level[l].H_fallback.rms, r.level[l].H_fallback.count);
       std::printf(", order %.2f; own estimates' largest |H error| / max |k|", order);
-      for (std::size_t l = 0; l < n_levels; ++l) std::printf(" %.3f", r.level[l].own_relative_max);
+      for (std::size_t l = 0; l < n_levels; ++l)
+        std::printf(" %.3f", r.level[l].own_relative_max);
       std::printf("\n");
       for (std::size_t l = 0; l < n_levels; ++l) {
         EXPECT_EQ(r.level[l].not_estimated, 0u);

@@ -83,10 +83,7 @@ constexpr bool has()
 // Sentinels that the estimator never writes.
 constexpr double sentinel_value = -123456.75;
 const Status sentinel_status = static_cast<Status>(200);
-Curvatures sentinel_curvatures()
-{
-  return Curvatures(-7.5, 7.25, Vector(7, 7, 7), Vector(-7, -7, -7));
-}
+Curvatures sentinel_curvatures() { return Curvatures(-7.5, 7.25, Vector(7, 7, 7), Vector(-7, -7, -7)); }
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
 
@@ -352,7 +349,13 @@ TEST(NamedParameters, PartialPacksAndDefaults)
 // Behaviour of paraboloid_fitting_curvatures
 // ---------------------------------------------------------------------------
 
-enum class Only { mean, gaussian, principal, status };
+enum class Only
+{
+  mean,
+  gaussian,
+  principal,
+  status
+};
 
 TEST(NamedParameters, OnlyTheOutputsPassedAreWritten)
 {
@@ -456,8 +459,8 @@ TEST(NamedParameters, ResultsDoNotDependOnTheOrderOfTheParameters)
                                             .vertex_point_map(vpm));
   // Reference with the defaults (quadric_fit normal, 1 boundary ring): the
   // parameters above must have been read, so some results differ from it.
-  CE::paraboloid_fitting_curvatures(mesh, CE::parameters::vertex_mean_curvature_map(reference.mean)
-                                            .vertex_estimation_status_map(reference.status));
+  CE::paraboloid_fitting_curvatures(
+    mesh, CE::parameters::vertex_mean_curvature_map(reference.mean).vertex_estimation_status_map(reference.status));
 
   int differing_from_defaults = 0, widened = 0;
   for (vertex_descriptor v : vertices(mesh)) {
@@ -544,8 +547,8 @@ TEST(NamedParameters, VertexNormalMapIsHonouredAndSetsTheSign)
   CE::paraboloid_fitting_curvatures(mesh, CE::parameters::vertex_mean_curvature_map(in.mean)
                                             .vertex_principal_curvatures_and_directions_map(in.principal)
                                             .vertex_normal_map(inward));
-  CE::paraboloid_fitting_curvatures(mesh, CE::parameters::vertex_mean_curvature_map(longer.mean)
-                                            .vertex_normal_map(long_outward));
+  CE::paraboloid_fitting_curvatures(
+    mesh, CE::parameters::vertex_mean_curvature_map(longer.mean).vertex_normal_map(long_outward));
   double worst = 0;
   for (vertex_descriptor v : vertices(mesh)) {
     EXPECT_NEAR(out.mean[v], 1 / radius, 1e-3 / radius) << v;
@@ -565,26 +568,32 @@ TEST(NamedParameters, OutOfRangeParametersThrow)
   Mesh mesh = jittered_paraboloid_grid();
   Outputs out(mesh);
   const auto H = out.mean;
-  EXPECT_THROW(CE::paraboloid_fitting_curvatures(mesh, CE::parameters::vertex_mean_curvature_map(H).neighborhood_rings(0)),
-               std::invalid_argument);
-  EXPECT_THROW(CE::paraboloid_fitting_curvatures(mesh, CE::parameters::neighborhood_rings(-1).vertex_mean_curvature_map(H)),
-               std::invalid_argument);
   EXPECT_THROW(
-    CE::paraboloid_fitting_curvatures(mesh, CE::parameters::vertex_mean_curvature_map(H).boundary_neighborhood_rings(0)),
+    CE::paraboloid_fitting_curvatures(mesh, CE::parameters::vertex_mean_curvature_map(H).neighborhood_rings(0)),
+    std::invalid_argument);
+  EXPECT_THROW(
+    CE::paraboloid_fitting_curvatures(mesh, CE::parameters::neighborhood_rings(-1).vertex_mean_curvature_map(H)),
     std::invalid_argument);
   EXPECT_THROW(CE::paraboloid_fitting_curvatures(
-                 mesh, CE::parameters::max_neighborhood_rings(1).boundary_neighborhood_rings(2).vertex_mean_curvature_map(H)),
+                 mesh, CE::parameters::vertex_mean_curvature_map(H).boundary_neighborhood_rings(0)),
                std::invalid_argument);
+  EXPECT_THROW(
+    CE::paraboloid_fitting_curvatures(
+      mesh, CE::parameters::max_neighborhood_rings(1).boundary_neighborhood_rings(2).vertex_mean_curvature_map(H)),
+    std::invalid_argument);
   EXPECT_THROW(CE::paraboloid_fitting_curvatures(
                  mesh, CE::parameters::vertex_mean_curvature_map(H).neighborhood_rings(3).max_neighborhood_rings(2)),
                std::invalid_argument);
-  EXPECT_THROW(CE::paraboloid_fitting_curvatures(mesh, CE::parameters::vertex_mean_curvature_map(H).max_condition_number(0.5)),
-               std::invalid_argument);
-  EXPECT_THROW(CE::paraboloid_fitting_curvatures(mesh, CE::parameters::max_condition_number(1.0).vertex_mean_curvature_map(H)),
-               std::invalid_argument);
-  EXPECT_THROW(CE::paraboloid_fitting_curvatures(
-                 mesh, CE::parameters::vertex_mean_curvature_map(H).max_condition_number(std::numeric_limits<double>::quiet_NaN())),
-               std::invalid_argument);
+  EXPECT_THROW(
+    CE::paraboloid_fitting_curvatures(mesh, CE::parameters::vertex_mean_curvature_map(H).max_condition_number(0.5)),
+    std::invalid_argument);
+  EXPECT_THROW(
+    CE::paraboloid_fitting_curvatures(mesh, CE::parameters::max_condition_number(1.0).vertex_mean_curvature_map(H)),
+    std::invalid_argument);
+  EXPECT_THROW(
+    CE::paraboloid_fitting_curvatures(mesh, CE::parameters::vertex_mean_curvature_map(H).max_condition_number(
+                                              std::numeric_limits<double>::quiet_NaN())),
+    std::invalid_argument);
   // Also without any output map (the arguments are checked first).
   EXPECT_THROW(CE::paraboloid_fitting_curvatures(mesh, CE::parameters::neighborhood_rings(0)), std::invalid_argument);
   // Nothing was written by the rejected calls.
@@ -651,8 +660,11 @@ TEST(NamedParameters, OneChainServesCgalInterpolatedCorrectedCurvatures)
   Mesh mesh = ce_test::to_mesh<Mesh>(ce_test::sphere_soup(radius, 4));
   auto H = mesh.add_property_map<vertex_descriptor, double>("v:H", sentinel_value).first;
   auto K = mesh.add_property_map<vertex_descriptor, double>("v:K", sentinel_value).first;
-  auto P = mesh.add_property_map<vertex_descriptor, CGAL::Polygon_mesh_processing::Principal_curvatures_and_directions<Kernel>>(
-                 "v:P").first;
+  auto P =
+    mesh
+      .add_property_map<vertex_descriptor, CGAL::Polygon_mesh_processing::Principal_curvatures_and_directions<Kernel>>(
+        "v:P")
+      .first;
   // Every vertex of the sphere has H = k_min = k_max = 1/r and K = 1/r^2 (then reset).
   const auto check = [&](const char* who, double tolerance) {
     for (vertex_descriptor v : vertices(mesh)) {

@@ -3,14 +3,14 @@
 // convergence and sign on closed surfaces, invariances, mesh-type independence,
 // concurrency, irregular meshes and bad input.
 #include <CGAL/Curvature_estimation/gauss_map.h>
+#include <CGAL/Curvature_estimation/internal/face_graph_platelet.h>
 #include <CGAL/Curvature_estimation/jet_fitting.h>
 #include <CGAL/Curvature_estimation/paraboloid_fitting.h>
-#include <CGAL/Curvature_estimation/internal/face_graph_platelet.h>
 
+#include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Dynamic_property_map.h>
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 
 #include <boost/property_map/property_map.hpp>
@@ -68,10 +68,9 @@ auto exact_normal_map(Mesh& mesh, const std::vector<ce_test::Exact_curvature>& e
 
 void print_table_row(const char* name, const Table_errors& t, const ce_test::Table1_row& paper)
 {
-  std::printf("  %-14s k1 %.6f (%.2fx)  k2 %.6f (%.2fx)  H %.6f (%.2fx)  K %.6f (%.2fx)\n", name,
-              t.k_max.stats().rms, t.k_max.stats().rms / paper.k1, t.k_min.stats().rms,
-              t.k_min.stats().rms / paper.k2, t.mean.stats().rms, t.mean.stats().rms / paper.H,
-              t.gaussian.stats().rms, t.gaussian.stats().rms / paper.K);
+  std::printf("  %-14s k1 %.6f (%.2fx)  k2 %.6f (%.2fx)  H %.6f (%.2fx)  K %.6f (%.2fx)\n", name, t.k_max.stats().rms,
+              t.k_max.stats().rms / paper.k1, t.k_min.stats().rms, t.k_min.stats().rms / paper.k2, t.mean.stats().rms,
+              t.mean.stats().rms / paper.H, t.gaussian.stats().rms, t.gaussian.stats().rms / paper.K);
 }
 
 // Hamann 1993 Table 1 / thesis Table 4.1: 51 x 51 grid over [-1, 1]^2, quads
@@ -94,10 +93,11 @@ TEST_F(Hamann_table1, ExactNormalsReproducePublishedRmsWithin2Percent)
     const ce_test::Soup soup = ce_test::grid_graph_soup(functions[f], n);
     Mesh mesh = ce_test::to_mesh<Mesh>(soup);
     const auto exact = ce_test::graph_curvatures(functions[f], soup);
-    const Estimates e = estimate(mesh, params::vertex_normal_map(exact_normal_map(mesh, exact)).boundary_neighborhood_rings(2));
+    const Estimates e =
+      estimate(mesh, params::vertex_normal_map(exact_normal_map(mesh, exact)).boundary_neighborhood_rings(2));
     const Table_errors t = curvature_errors(e, exact);
     const ce_test::Table1_row& paper = published[f];
-    if (paper.k1 == 0) {  // the plane: exact up to rounding
+    if (paper.k1 == 0) { // the plane: exact up to rounding
       EXPECT_LT(t.k_max.stats().max, 1e-12) << functions[f].name;
       EXPECT_LT(t.k_min.stats().max, 1e-12) << functions[f].name;
       EXPECT_LT(t.mean.stats().max, 1e-12) << functions[f].name;
@@ -192,7 +192,7 @@ TEST(Paraboloid_fitting, DirectionsAreUnitOrthogonalTangentAndFollowTheTorus)
   const double R = 3, r = 1;
   const auto [soup, mesh, exact] = ce_test::sampled_torus<Mesh>(R, r, 120, 60);
   const Estimates e = estimate(mesh);
-  const double direction = ce_test::max_direction_error(e, exact, 0.02);  // tangent up to the normal's error
+  const double direction = ce_test::max_direction_error(e, exact, 0.02); // tangent up to the normal's error
   const Table_errors t = curvature_errors(e, exact);
   std::printf("torus 120x60: k_max RMS %.2e, k_min RMS %.2e, max 1-|cos| of d_max %.2e\n", t.k_max.stats().rms,
               t.k_min.stats().rms, direction);
@@ -280,7 +280,8 @@ TEST(Paraboloid_fitting, SurfaceMeshAndPolyhedronGiveTheSameNumbers)
 TEST(Paraboloid_fitting, SequentialAndParallelAreIdentical)
 {
   // More vertices than one parallel block, so that blocks are exercised.
-  const ce_test::Soup soup = ce_test::jittered_grid_graph_soup(ce_test::hamann_table1_functions()[8], 200, -1, 1, 0.2, 3);
+  const ce_test::Soup soup =
+    ce_test::jittered_grid_graph_soup(ce_test::hamann_table1_functions()[8], 200, -1, 1, 0.2, 3);
   const Mesh mesh = ce_test::to_mesh<Mesh>(soup);
   const Estimates sequential = estimate<CGAL::Sequential_tag>(mesh, params::default_values());
   const Estimates parallel = estimate<CGAL::Parallel_tag>(mesh, params::default_values());
@@ -299,18 +300,19 @@ TEST(Paraboloid_fitting, OnlyMapsWithSlotsPerIndexAreWrittenFromWorkerThreads)
   using Polyhedron_vertex = boost::graph_traits<Polyhedron>::vertex_descriptor;
   EXPECT_TRUE((accessible_concurrently<Mesh::Property_map<Mesh::Vertex_index, double>>()));
   EXPECT_TRUE((accessible_concurrently<Mesh::Property_map<Mesh::Vertex_index, Curvatures>>()));
-  EXPECT_FALSE((accessible_concurrently<Mesh::Property_map<Mesh::Vertex_index, bool>>()));  // packed bits
+  EXPECT_FALSE((accessible_concurrently<Mesh::Property_map<Mesh::Vertex_index, bool>>())); // packed bits
   EXPECT_FALSE((accessible_concurrently<boost::associative_property_map<std::map<Polyhedron_vertex, double>>>()));
-  EXPECT_FALSE((accessible_concurrently<
-                decltype(get(CGAL::dynamic_vertex_property_t<double>(), std::declval<Polyhedron&>()))>()));
+  EXPECT_FALSE(
+    (accessible_concurrently<decltype(get(CGAL::dynamic_vertex_property_t<double>(), std::declval<Polyhedron&>()))>()));
 }
 
 TEST(Paraboloid_fitting, ParallelOnAPolyhedronWithAssociativeMapsMatchesSequential)
 {
-  const ce_test::Soup soup = ce_test::jittered_grid_graph_soup(ce_test::hamann_table1_functions()[8], 190, -1, 1, 0.2, 5);
+  const ce_test::Soup soup =
+    ce_test::jittered_grid_graph_soup(ce_test::hamann_table1_functions()[8], 190, -1, 1, 0.2, 5);
   const Polyhedron polyhedron = ce_test::to_mesh<Polyhedron>(soup);
   using Vertex = boost::graph_traits<Polyhedron>::vertex_descriptor;
-  std::map<Vertex, double> sequential, parallel;  // std::map inserts on access: not thread-safe
+  std::map<Vertex, double> sequential, parallel; // std::map inserts on access: not thread-safe
   CE::paraboloid_fitting_curvatures(polyhedron,
                                     params::vertex_mean_curvature_map(boost::make_assoc_property_map(sequential)));
   CE::paraboloid_fitting_curvatures<CGAL::Parallel_tag>(
@@ -343,9 +345,10 @@ TEST(Paraboloid_fitting, IrregularDelaunayMeshIsFiniteEverywhereAndConverges)
     const Table_errors all = curvature_errors(e, exact);
     const Table_errors interior = curvature_errors(e, exact, [&](std::size_t k) { return !border[k]; });
     const double h = ce_test::mean_edge_length(soup);
-    std::printf("Delaunay %5zu points (h %.4f, %zu widened): H RMS all %.2e interior %.2e, K RMS all %.2e interior %.2e",
-                points, h, widened, all.mean.stats().rms, interior.mean.stats().rms, all.gaussian.stats().rms,
-                interior.gaussian.stats().rms);
+    std::printf(
+      "Delaunay %5zu points (h %.4f, %zu widened): H RMS all %.2e interior %.2e, K RMS all %.2e interior %.2e", points,
+      h, widened, all.mean.stats().rms, interior.mean.stats().rms, all.gaussian.stats().rms,
+      interior.gaussian.stats().rms);
     const std::optional<double> order = H_convergence.add(h, interior.mean.stats().rms);
     if (order)
       std::printf(", interior H order %.2f", *order);
@@ -411,8 +414,8 @@ TEST(Paraboloid_fitting, WhereNoRingDeterminesTheFitTheDefaultFallsBackToJetFitt
     by_jet += jet_fit;
     by_gauss_map += gauss_map_fit;
   }
-  EXPECT_EQ(by_jet, 24u);        // the two outer circles
-  EXPECT_EQ(by_gauss_map, 24u);  // the two inner ones
+  EXPECT_EQ(by_jet, 24u);       // the two outer circles
+  EXPECT_EQ(by_gauss_map, 24u); // the two inner ones
   const Estimates paper = estimate(mesh, params::vertex_normal_method(CE::Vertex_normal_method::area_weighted));
   for (std::size_t i = 0; i < paper.status.size(); ++i)
     EXPECT_NE(paper.status[i], Estimation_status::fallback) << i;
@@ -478,8 +481,8 @@ TEST(Paraboloid_fitting, ExactNormalsOnAGridWidenOnlyWhereTheOneRingIsIllConditi
         EXPECT_NE(s, Estimation_status::not_estimable) << i << ' ' << j;
       }
     }
-  EXPECT_EQ(e.status[0], Estimation_status::widened);              // corner (0, 0): two neighbors
-  EXPECT_EQ(e.status[n * n - 1], Estimation_status::widened);      // corner (n-1, n-1)
+  EXPECT_EQ(e.status[0], Estimation_status::widened);         // corner (0, 0): two neighbors
+  EXPECT_EQ(e.status[n * n - 1], Estimation_status::widened); // corner (n-1, n-1)
 }
 
-}  // namespace
+} // namespace

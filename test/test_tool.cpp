@@ -8,8 +8,8 @@
 // tools/CMakeLists.txt defines CE_CURVATURE_TOOL (the built tool's path).
 #include <gtest/gtest.h>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Curvature_estimation/mean_edge_length.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/PLY.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
@@ -48,8 +48,7 @@ const char* const tool_path = CE_CURVATURE_TOOL;
 const char* const tool_path = nullptr;
 #endif
 
-const char* const csv_header =
-  "k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,status";
+const char* const csv_header = "k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,status";
 
 struct Result
 {
@@ -106,8 +105,7 @@ protected:
     if (!tool_path)
       GTEST_SKIP() << "the tool is not built (CE_BUILD_TOOLS=OFF)";
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir = fs::temp_directory_path() /
-          ("ce_test_tool_" + std::to_string(::getpid()) + "_" + info->name());
+    dir = fs::temp_directory_path() / ("ce_test_tool_" + std::to_string(::getpid()) + "_" + info->name());
     fs::remove_all(dir);
     fs::create_directories(dir);
   }
@@ -286,8 +284,7 @@ Indexed icosphere(int levels, double r) { return indexed(ce_test::sphere_soup(r,
 // A closed tetrahedron with outward faces, scaled and shifted.
 Indexed tetrahedron(double s = 1, double dx = 0)
 {
-  return Indexed{{{dx, 0, 0}, {dx + s, 0, 0}, {dx, s, 0}, {dx, 0, s}},
-                 {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}};
+  return Indexed{{{dx, 0, 0}, {dx + s, 0, 0}, {dx, s, 0}, {dx, 0, s}}, {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}};
 }
 
 void append(Indexed& a, const Indexed& b)
@@ -378,7 +375,7 @@ TEST_F(ToolTest, MissingFile) { expect_rejected({(dir / "no_such_file.off").stri
 
 TEST_F(ToolTest, UnreadableFile)
 {
-  fs::create_directories(dir / "a_directory.off");  // exists, cannot be read as a file (also as root)
+  fs::create_directories(dir / "a_directory.off"); // exists, cannot be read as a file (also as root)
   expect_rejected({(dir / "a_directory.off").string()}, "unreadable file");
 }
 
@@ -425,7 +422,8 @@ TEST_F(ToolTest, GarbageFiles)
 TEST_F(ToolTest, TruncatedFiles)
 {
   const std::string full = off(icosphere(1, 1));
-  expect_rejected({file("truncated_vertices.off", full.substr(0, full.size() / 3)).string()}, "truncated OFF (vertices)");
+  expect_rejected({file("truncated_vertices.off", full.substr(0, full.size() / 3)).string()},
+                  "truncated OFF (vertices)");
   expect_rejected({file("truncated_faces.off", full.substr(0, full.size() - 12)).string()}, "truncated OFF (faces)");
   expect_rejected({file("header_only.off", "OFF\n4 4 0\n").string()}, "OFF header only");
   expect_rejected({file("huge_header.off", "OFF\n2000000000 2000000000 0\n0 0 0\n").string()}, "OFF huge counts");
@@ -442,8 +440,9 @@ TEST_F(ToolTest, TruncatedFiles)
   expect_rejected({file("4d.off", "4OFF\n3 1 0\n" + triangle).string()}, "4OFF");
   expect_rejected({file("extra_values.off", "OFF\n3 1 0\n0 0 0 7\n1 0 0\n0 1 0\n3 0 1 2\n").string()},
                   "OFF vertex with a fourth value");
-  expect_rejected({file("too_many_colours.off", "OFF\n3 1 0\n" + triangle.substr(0, triangle.size() - 1) +
-                                                  " 1 1 1 1 1\n").string()}, "OFF face with 5 colour values");
+  expect_rejected(
+    {file("too_many_colours.off", "OFF\n3 1 0\n" + triangle.substr(0, triangle.size() - 1) + " 1 1 1 1 1\n").string()},
+    "OFF face with 5 colour values");
   const std::string stl = binary_stl(icosphere(1, 1));
   expect_rejected({file("truncated.stl", stl.substr(0, stl.size() / 2)).string()}, "truncated binary STL");
   const std::string ply = ascii_ply(ply_vertex_element(4) + ply_face_element(4), "0 0 0\n1 0 0\n0 1 0\n");
@@ -472,8 +471,9 @@ TEST_F(ToolTest, TruncatedFiles)
   const std::string format_line = "ply\nend_header_ ascii 1.0\nproperty float y\nelement face 0\nend_header\n";
   expect_rejected({file("end_header_format.ply", format_line).string()}, "PLY end_header on the format line");
   // A list count of a signed or 32-bit type: CGAL resizes the list to it, cast to size_t.
-  const std::string int_count = ascii_ply(ply_vertex_element(3) + "element face 1\nproperty list int int vertex_indices\n",
-                                          "0 0 0\n1 0 0\n0 1 0\n-1 0 1 2\n");
+  const std::string int_count =
+    ascii_ply(ply_vertex_element(3) + "element face 1\nproperty list int int vertex_indices\n",
+              "0 0 0\n1 0 0\n0 1 0\n-1 0 1 2\n");
   expect_rejected({file("int_list_count.ply", int_count).string()}, "PLY list count of type int");
 }
 
@@ -644,14 +644,13 @@ TEST_F(DegenerateTest, NonManifoldVertexAndEdge)
   for (const auto& p : other.points)
     bowtie.points.push_back(p);
   for (auto f : other.faces) {
-    std::swap(f[0], f[1]);  // the mirror image reverses orientation: restore outward
+    std::swap(f[0], f[1]); // the mirror image reverses orientation: restore outward
     bowtie.faces.push_back(f);
   }
   all_methods(file("bowtie.off", off(bowtie)), bowtie.points.size(), "non-manifold vertex");
 
   // Three triangles on one edge (0,1): a non-manifold edge.
-  const Indexed fan{{{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 0, 1}},
-                    {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}};
+  const Indexed fan{{{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 0, 1}}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}};
   all_methods(file("fan.off", off(fan)), fan.points.size(), "non-manifold edge");
   all_methods(file("fan.obj", obj(fan)), fan.points.size(), "non-manifold edge (OBJ)");
 }
@@ -678,7 +677,7 @@ TEST_F(DegenerateTest, BoundaryAndTinyComponents)
   const auto all = all_methods(file("tiny.off", off(m)), m.points.size(), "tiny components");
   for (const auto& rows : all) {
     ASSERT_EQ(rows.size(), m.points.size());
-    EXPECT_EQ(rows[3].status, "failed");  // only in the two-vertex face
+    EXPECT_EQ(rows[3].status, "failed"); // only in the two-vertex face
     EXPECT_EQ(rows[4].status, "failed");
   }
 }
@@ -702,7 +701,7 @@ TEST_F(ToolTest, ThreadsGiveTheSameRows)
 TEST_F(ToolTest, LargeMeshGivesEveryRow)
 {
   const double r = 2.5;
-  const Indexed m = icosphere(7, r);  // 163,842 vertices, an OFF of about 10 MB
+  const Indexed m = icosphere(7, r); // 163,842 vertices, an OFF of about 10 MB
   const fs::path p = file("large_sphere.off", off(m));
   ASSERT_GE(fs::file_size(p), 8u << 20);
   const std::vector<Row> rows = csv(p);
@@ -724,7 +723,7 @@ TEST_F(ToolTest, LargeMeshGivesEveryRow)
 TEST_F(ToolTest, SphereMeanCurvatureIsOneOverR)
 {
   const double r = 2.5;
-  const Indexed m = icosphere(3, r);  // 642 vertices
+  const Indexed m = icosphere(3, r); // 642 vertices
   const fs::path p = file("sphere.off", off(m));
   for (const auto& method : methods) {
     const std::vector<Row> rows = csv(p, {"-m", method});
@@ -742,7 +741,7 @@ TEST_F(ToolTest, SphereMeanCurvatureIsOneOverR)
       EXPECT_NEAR(v[4] * v[7] + v[5] * v[8] + v[6] * v[9], 0, 1e-9);
     }
     std::cout << method << ": max |H r - 1| = " << max_error_H << ", max |K r^2 - 1| = " << max_error_K << '\n';
-    EXPECT_LT(max_error_H, 0.05) << method;  // positive: outward faces
+    EXPECT_LT(max_error_H, 0.05) << method; // positive: outward faces
     EXPECT_LT(max_error_K, 0.1) << method;
   }
 }
@@ -835,9 +834,10 @@ TEST_F(RadiusTest, InMeanEdgesIsInMeshUnits)
   radius.precision(17);
   radius << 4 * mean_edge_length();
   for (const std::vector<std::string>& method : {std::vector<std::string>{"-m", "paraboloid"},
-                                                {"-m", "paraboloid", "--fit-degree", "3"},
-                                                {"-m", "jet", "--degree", "3"},
-                                                {"-m", "gauss-map"}}) {
+                                                 {"-m", "paraboloid", "--fit-degree", "3"},
+                                                 {"-m", "jet", "--degree", "3"},
+                                                 {"-m", "gauss-map"}})
+  {
     auto with = [&](const std::string& r) {
       std::vector<std::string> args = method;
       args.insert(args.end(), {"--radius", r});
@@ -989,7 +989,7 @@ TEST_F(ToolTest, ErrorWhileWritingLeavesNoFile)
   const fs::path existing = file("existing.ply", "previous content\n");
   EXPECT_NE(run({"-o", existing.string(), p.string()}).exit_code, 0);
   EXPECT_EQ(read_text(existing), "previous content\n");
-  EXPECT_EQ(csv(p).size(), disk.points.size());  // CSV has no such limit
+  EXPECT_EQ(csv(p).size(), disk.points.size()); // CSV has no such limit
 }
 
 TEST_F(ToolTest, SummaryAndHelp)
@@ -998,8 +998,8 @@ TEST_F(ToolTest, SummaryAndHelp)
   const Result r = run({p.string()});
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(r.err.empty()) << r.err;
-  for (const char* s : {"vertices: 162", "time:", "mean curvature H: min", "Gaussian curvature K: min",
-                        "widened: ", "failed"})
+  for (const char* s :
+       {"vertices: 162", "time:", "mean curvature H: min", "Gaussian curvature K: min", "widened: ", "failed"})
     EXPECT_NE(r.out.find(s), std::string::npos) << s << " in\n" << r.out;
   const Result h = run({"--help"});
   EXPECT_EQ(h.exit_code, 0);
@@ -1027,7 +1027,7 @@ class RepairPathTest : public ToolTest
 public:
   struct Csv
   {
-    std::vector<std::string> lines;  // header, then a row per vertex
+    std::vector<std::string> lines; // header, then a row per vertex
     std::string err;
   };
 
@@ -1127,7 +1127,7 @@ TEST_F(RepairPathTest, NonManifoldVertex)
   // Two closed tetrahedra sharing one vertex: every edge is in two faces of opposite
   // orientations, but the faces around the shared vertex are two fans.
   Indexed m = tetrahedron();
-  Indexed other = tetrahedron(1, 1);  // its vertex 0 is m's vertex 1
+  Indexed other = tetrahedron(1, 1); // its vertex 0 is m's vertex 1
   m.points.insert(m.points.end(), other.points.begin() + 1, other.points.end());
   for (auto face : other.faces) {
     for (auto& i : face)
@@ -1218,7 +1218,8 @@ public:
 TEST_F(TetrahedralTest, LinearGraphIsFlat)
 {
   const Tetrahedra t = kuhn_grid(9);
-  const fs::path p = graph("linear", t, sample(t, [](double x, double y, double z) { return 0.2 * x - 0.3 * y + 0.1 * z + 1; }));
+  const fs::path p =
+    graph("linear", t, sample(t, [](double x, double y, double z) { return 0.2 * x - 0.3 * y + 0.1 * z + 1; }));
   const std::vector<Row> r = rows(p);
   ASSERT_EQ(r.size(), t.points.size());
   for (std::size_t v = 0; v < r.size(); ++v) {
@@ -1240,8 +1241,8 @@ TEST_F(TetrahedralTest, QuadraticGraphHasTheExactCurvatureInside)
   const Tetrahedra t = kuhn_grid(n);
   // Sections the tool skips, as Medit writers add them.
   const std::string extra = "Triangles\n1\n1 2 3 7\nEdges\n2\n1 2 0\n2 3 0\nCorners\n1\n1\nRidges\n1\n1\n";
-  const fs::path p = graph("bowl", t, sample(t, [](double x, double y, double z) { return (x * x + y * y + z * z) / 2; }),
-                           extra);
+  const fs::path p =
+    graph("bowl", t, sample(t, [](double x, double y, double z) { return (x * x + y * y + z * z) / 2; }), extra);
   const std::vector<Row> r = rows(p);
   ASSERT_EQ(r.size(), t.points.size());
   double max_error_k = 0, max_error_H = 0;
@@ -1249,7 +1250,7 @@ TEST_F(TetrahedralTest, QuadraticGraphHasTheExactCurvatureInside)
     EXPECT_NE(r[v].status, "failed") << "row " << v;
     const auto& q = t.points[v];
     if (std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2])}) > 0.99)
-      continue;  // boundary
+      continue; // boundary
     const double l = std::sqrt(1 + q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
     const double k[3] = {-1 / (l * l * l), -1 / l, -1 / l};
     for (int i = 0; i < 3; ++i)
@@ -1271,9 +1272,9 @@ TEST_F(TetrahedralTest, QuadraticGraphHasTheExactCurvatureInside)
   // The summary.
   const Result s = run({p.string()});
   EXPECT_EQ(s.exit_code, 0) << s.err;
-  for (const std::string& line : std::vector<std::string>{"vertices: " + std::to_string(t.points.size()),
-                                 "tetrahedra: " + std::to_string(t.cells.size()), "time:", "mean curvature H: min",
-                                 "Gaussian curvature K: min", "failed (not estimable): 0"})
+  for (const std::string& line : std::vector<std::string>{
+         "vertices: " + std::to_string(t.points.size()), "tetrahedra: " + std::to_string(t.cells.size()),
+         "time:", "mean curvature H: min", "Gaussian curvature K: min", "failed (not estimable): 0"})
     EXPECT_NE(s.out.find(line), std::string::npos) << line << " in\n" << s.out;
 }
 
@@ -1381,7 +1382,7 @@ TEST_F(TetrahedralTest, RadiusIsABallOfR4)
     EXPECT_EQ(in_edges[v].values, in_units[v].values) << "row " << v;
     const auto& q = t.points[v];
     if (std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2])}) > 0.5)
-      continue;  // within the ball's reach of the boundary
+      continue; // within the ball's reach of the boundary
     const double l = std::sqrt(1 + q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
     const double H = (-1 / (l * l * l) - 2 / l) / 3;
     ball_sum += (in_edges[v].values[3] - H) * (in_edges[v].values[3] - H);
@@ -1403,7 +1404,7 @@ TEST_F(TetrahedralTest, RadiusIsABallOfR4)
 
 TEST_F(TetrahedralTest, BadInput)
 {
-  const Tetrahedra t = kuhn_grid(2);  // 8 vertices, 6 tetrahedra
+  const Tetrahedra t = kuhn_grid(2); // 8 vertices, 6 tetrahedra
   const std::string mesh = medit_mesh(t);
   const std::string sol = medit_sol(sample(t, [](double x, double y, double z) { return x + y * z; }));
   auto replaced = [](std::string text, const std::string& from, const std::string& to) {
@@ -1430,7 +1431,7 @@ TEST_F(TetrahedralTest, BadInput)
     {"index_too_large", with_cell({0, 1, 2, 8})},
     {"index_zero", replaced(mesh, "Tetrahedra\n6\n1 ", "Tetrahedra\n6\n0 ")},
     {"repeated_vertex", with_cell({0, 1, 1, 7})},
-    {"zero_volume", with_cell({0, 1, 2, 3})},  // the square z = -1
+    {"zero_volume", with_cell({0, 1, 2, 3})}, // the square z = -1
     {"duplicate_tetrahedron", with_cell({t.cells[2][3], t.cells[2][1], t.cells[2][0], t.cells[2][2]})},
     {"nan", with_point("nan")},
     {"inf", with_point("-inf")},

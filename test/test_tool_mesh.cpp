@@ -87,8 +87,8 @@ void expect_cgal_mesh(const std::vector<ce_tool::Point>& points, const Polygons&
   for (Mesh::Face_index f : cgal.faces())
     differences += ours.halfedge(f) != cgal.halfedge(f);
   for (Mesh::Halfedge_index h : cgal.halfedges())
-    differences += ours.target(h) != cgal.target(h) || ours.next(h) != cgal.next(h) ||
-                   ours.prev(h) != cgal.prev(h) || ours.face(h) != cgal.face(h);
+    differences += ours.target(h) != cgal.target(h) || ours.next(h) != cgal.next(h) || ours.prev(h) != cgal.prev(h) ||
+                   ours.face(h) != cgal.face(h);
   EXPECT_EQ(differences, 0u) << "of " << points.size() << " vertices, " << polygons.size() << " faces";
 }
 
@@ -103,7 +103,8 @@ TEST(ToolMesh, GridWithBorderInTheFileOrderAndShuffled)
 TEST(ToolMesh, ClosedSurfacesShuffled)
 {
   for (const ce_test::Soup& s : {ce_test::sphere_soup(1.0, 3), ce_test::torus_soup(3.0, 1.0, 24, 10),
-                                 ce_test::marching_tetrahedra_soup(ce_test::gaussian_blobs(), 10)}) {
+                                 ce_test::marching_tetrahedra_soup(ce_test::gaussian_blobs(), 10)})
+  {
     expect_cgal_mesh(points_of(s), polygons_of(s));
     for (unsigned seed = 1; seed <= 3; ++seed)
       expect_cgal_mesh(points_of(s), shuffled(polygons_of(s), seed));
@@ -124,12 +125,20 @@ TEST(ToolMesh, MixedPolygonsHolesAndComponents)
   for (std::size_t j = 0; j + 1 < n; ++j) {
     for (std::size_t i = 0; i + 1 < n; ++i) {
       if ((i == 2 && j == 2) || (i == 5 && j == 4) || (i == 2 && j == 6))
-        continue;  // holes
+        continue; // holes
       const std::size_t a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
       switch ((i + 2 * j) % 3) {
-        case 0: polygons.push_back({a, b, c, d}); break;
-        case 1: polygons.push_back({a, b, c}); polygons.push_back({a, c, d}); break;
-        default: polygons.push_back({b, c, d}); polygons.push_back({b, d, a}); break;
+        case 0:
+          polygons.push_back({a, b, c, d});
+          break;
+        case 1:
+          polygons.push_back({a, b, c});
+          polygons.push_back({a, c, d});
+          break;
+        default:
+          polygons.push_back({b, c, d});
+          polygons.push_back({b, d, a});
+          break;
       }
     }
   }

@@ -5,8 +5,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 
 #include <gtest/gtest.h>
 
@@ -43,7 +43,9 @@ double angle_between(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b
 struct Lcg
 {
   std::uint64_t state;
-  explicit Lcg(std::uint64_t seed) : state(seed) {}
+  explicit Lcg(std::uint64_t seed)
+      : state(seed)
+  {}
   double uniform() // in [-1, 1)
   {
     state = state * 6364136223846793005ULL + 1442695040888963407ULL;
@@ -217,8 +219,7 @@ struct Star
 {
   Vec3 center{0.1, -0.2, 0.3};
   // ring around the centre, counter-clockwise seen from +z, unequal angles, radii, heights
-  std::vector<Vec3> ring{{1.0, 0.1, 0.2}, {0.4, 0.9, -0.1}, {-0.7, 1.6, 0.5},
-                         {-1.1, -0.2, 0.0}, {0.3, -0.5, 0.4}};
+  std::vector<Vec3> ring{{1.0, 0.1, 0.2}, {0.4, 0.9, -0.1}, {-0.7, 1.6, 0.5}, {-1.1, -0.2, 0.0}, {0.3, -0.5, 0.4}};
   Mesh mesh;
   vertex_descriptor c;
 
@@ -244,10 +245,17 @@ struct Star
       const Vec3 centroid = (center + ring[i] + ring[(i + 1) % ring.size()]) / 3.;
       double w = 0.;
       switch (method) {
-        case Method::area_weighted: w = area; break;
-        case Method::angle_weighted: w = angle; break;
-        case Method::centroid_weighted: w = 1. / (centroid - center).squaredNorm(); break;
-        default: ADD_FAILURE();
+        case Method::area_weighted:
+          w = area;
+          break;
+        case Method::angle_weighted:
+          w = angle;
+          break;
+        case Method::centroid_weighted:
+          w = 1. / (centroid - center).squaredNorm();
+          break;
+        default:
+          ADD_FAILURE();
       }
       sum += w * unit_normal;
     }
@@ -312,8 +320,8 @@ TEST(VertexNormals, QuadBoxCornersHaveTheHandComputedNormals)
 
   // at the corner (X,Y,Z) the outward face normals are +x, +y, +z, i.e. by symmetry the
   // corner normal is (s_x wx, s_y wy, s_z wz) with weights of the faces x = X, y = Y, z = Z
-  const Vec3 area(Y * Z, X * Z, X * Y);                   // face areas
-  const Vec3 angle(pi / 2, pi / 2, pi / 2);                 // right angles
+  const Vec3 area(Y * Z, X * Z, X * Y);                                                  // face areas
+  const Vec3 angle(pi / 2, pi / 2, pi / 2);                                              // right angles
   const Vec3 centroid(4. / (Y * Y + Z * Z), 4. / (X * X + Z * Z), 4. / (X * X + Y * Y)); // 1/|G-v|^2
   const Vec3 expected[] = {area.normalized(), angle.normalized(), centroid.normalized()};
 
@@ -339,7 +347,7 @@ TEST(VertexNormals, ReflexVertexOfNonConvexPolygonGetsItsLargeAngle)
   Mesh m = to_mesh(s);
 
   const Vec3 n_hexagon(0, 0, 1);
-  const Vec3 e1(1, 0, 0), e2(0.5, 0, -1); // edges of the triangle at r
+  const Vec3 e1(1, 0, 0), e2(0.5, 0, -1);            // edges of the triangle at r
   const Vec3 n_triangle = e1.cross(e2).normalized(); // (0, 1, 0)
   const double triangle_angle = std::acos(e1.dot(e2) / e2.norm());
   const double triangle_area = 0.5 * e1.cross(e2).norm();
@@ -521,8 +529,8 @@ TEST(VertexNormals, QuadricFitIsSecondOrderAlsoAtTheBoundaryWhereFaceAveragesAre
     EXPECT_LT(worst_fitted, worst_area);
     if (previous_fitted > 0) {
       const double h_ratio = 40.0 / 20.0;
-      EXPECT_GT(std::log(previous_fitted / worst_fitted) / std::log(h_ratio), 1.8);  // second order
-      EXPECT_LT(std::log(previous_area / worst_area) / std::log(h_ratio), 1.5);      // first order
+      EXPECT_GT(std::log(previous_fitted / worst_fitted) / std::log(h_ratio), 1.8); // second order
+      EXPECT_LT(std::log(previous_area / worst_area) / std::log(h_ratio), 1.5);     // first order
     }
     previous_fitted = worst_fitted;
     previous_area = worst_area;
@@ -532,9 +540,9 @@ TEST(VertexNormals, QuadricFitIsSecondOrderAlsoAtTheBoundaryWhereFaceAveragesAre
 TEST(VertexNormals, FaceAverageKernelRefusesQuadricFit)
 {
   Star star;
-  EXPECT_THROW(CE::internal::face_average_normal(star.c, star.mesh, get(CGAL::vertex_point, star.mesh),
-                                                 Method::quadric_fit),
-               std::invalid_argument);
+  EXPECT_THROW(
+    CE::internal::face_average_normal(star.c, star.mesh, get(CGAL::vertex_point, star.mesh), Method::quadric_fit),
+    std::invalid_argument);
 }
 
 } // namespace

@@ -11,7 +11,8 @@ namespace ce_tool {
 
 namespace fs = std::filesystem;
 
-Atomic_file::Atomic_file(const std::string& path) : path_(path)
+Atomic_file::Atomic_file(const std::string& path)
+    : path_(path)
 {
   const fs::path target(path);
   const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");

@@ -69,8 +69,9 @@ int parse_int(const std::string& option, const std::string& text, int min_value,
   const char* last = text.data() + text.size();
   const auto [ptr, ec] = std::from_chars(first, last, value);
   if (ec != std::errc() || ptr != last || value < min_value || value > max_value)
-    fail(option + " expects an integer from " + std::to_string(min_value) + " to " +
-           std::to_string(max_value) + ", got '" + text + "'", 2);
+    fail(option + " expects an integer from " + std::to_string(min_value) + " to " + std::to_string(max_value) +
+           ", got '" + text + "'",
+         2);
   return value;
 }
 
@@ -83,8 +84,11 @@ Radius parse_radius(const std::string& option, const std::string& text)
   const char* last = text.data() + text.size() - (in_mean_edges ? 1 : 0);
   const auto [ptr, ec] = std::from_chars(first, last, value);
   if (ec != std::errc() || ptr != last || !(value > 0) || !std::isfinite(value))
-    fail(option + " expects a positive length in mesh units, or a positive number of mean edge lengths "
-                  "followed by x (as in 4x), got '" + text + "'", 2);
+    fail(option +
+           " expects a positive length in mesh units, or a positive number of mean edge lengths "
+           "followed by x (as in 4x), got '" +
+           text + "'",
+         2);
   return {value, in_mean_edges};
 }
 
@@ -107,12 +111,18 @@ std::optional<Options> parse_arguments(int argc, char** argv)
     } else if (arg == "-m" || arg == "--method") {
       const std::string m = value(arg);
       o.method_name = m;
-      if (m == "paraboloid") o.method = Method::paraboloid;
-      else if (m == "curve-network") o.method = Method::curve_network;
-      else if (m == "gauss-map") o.method = Method::gauss_map;
-      else if (m == "taubin") o.method = Method::taubin;
-      else if (m == "chen-schmitt") o.method = Method::chen_schmitt;
-      else if (m == "jet") o.method = Method::jet;
+      if (m == "paraboloid")
+        o.method = Method::paraboloid;
+      else if (m == "curve-network")
+        o.method = Method::curve_network;
+      else if (m == "gauss-map")
+        o.method = Method::gauss_map;
+      else if (m == "taubin")
+        o.method = Method::taubin;
+      else if (m == "chen-schmitt")
+        o.method = Method::chen_schmitt;
+      else if (m == "jet")
+        o.method = Method::jet;
       else
         fail("unknown method '" + m + "' (expected paraboloid, curve-network, gauss-map, taubin, chen-schmitt or jet)",
              2);
@@ -137,11 +147,16 @@ std::optional<Options> parse_arguments(int argc, char** argv)
       o.threads = parse_int(arg, value(arg), 0, 1024);
     } else if (arg == "--color-by") {
       const std::string q = value(arg);
-      if (q == "k_max") o.color_by = Quantity::k_max;
-      else if (q == "k_min") o.color_by = Quantity::k_min;
-      else if (q == "mean") o.color_by = Quantity::mean;
-      else if (q == "gaussian") o.color_by = Quantity::gaussian;
-      else fail("unknown --color-by '" + q + "' (expected k_max, k_min, mean or gaussian)", 2);
+      if (q == "k_max")
+        o.color_by = Quantity::k_max;
+      else if (q == "k_min")
+        o.color_by = Quantity::k_min;
+      else if (q == "mean")
+        o.color_by = Quantity::mean;
+      else if (q == "gaussian")
+        o.color_by = Quantity::gaussian;
+      else
+        fail("unknown --color-by '" + q + "' (expected k_max, k_min, mean or gaussian)", 2);
     } else if (arg.size() > 1 && arg[0] == '-') {
       fail("unknown option '" + arg + "' (see curvature --help)", 2);
     } else {
@@ -162,7 +177,8 @@ std::optional<Options> parse_arguments(int argc, char** argv)
     fail(std::string(o.degree ? "--degree" : "--monge-degree") + " applies to the jet method only", 2);
   if (o.monge_degree && *o.monge_degree > o.degree.value_or(2))
     fail("--monge-degree " + std::to_string(*o.monge_degree) + " exceeds the jet degree " +
-           std::to_string(o.degree.value_or(2)) + " (see --degree)", 2);
+           std::to_string(o.degree.value_or(2)) + " (see --degree)",
+         2);
   o.tetrahedral = lower_extension(o.input) == ".mesh";
   if (o.tetrahedral) {
     if (o.method != Method::paraboloid)
@@ -193,10 +209,14 @@ std::optional<Options> parse_arguments(int argc, char** argv)
 const char* quantity_name(Quantity q)
 {
   switch (q) {
-    case Quantity::k_max: return "k_max";
-    case Quantity::k_min: return "k_min";
-    case Quantity::mean: return "mean";
-    default: return "gaussian";
+    case Quantity::k_max:
+      return "k_max";
+    case Quantity::k_min:
+      return "k_min";
+    case Quantity::mean:
+      return "mean";
+    default:
+      return "gaussian";
   }
 }
 

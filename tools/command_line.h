@@ -8,8 +8,22 @@
 
 namespace ce_tool {
 
-enum class Method { paraboloid, curve_network, gauss_map, taubin, chen_schmitt, jet };
-enum class Quantity { k_max, k_min, mean, gaussian };
+enum class Method
+{
+  paraboloid,
+  curve_network,
+  gauss_map,
+  taubin,
+  chen_schmitt,
+  jet
+};
+enum class Quantity
+{
+  k_max,
+  k_min,
+  mean,
+  gaussian
+};
 
 // --radius: the radius of the neighborhood balls, in mesh units or, with a
 // trailing x, in mean edge lengths of the input mesh.
@@ -26,12 +40,12 @@ struct Options
   Method method = Method::paraboloid;
   std::string method_name = "paraboloid";
   std::optional<int> rings;
-  std::optional<Radius> radius;  // paraboloid and jet, surfaces only
+  std::optional<Radius> radius; // paraboloid and jet, surfaces only
   std::optional<int> order;
-  std::optional<int> fit_degree;  // paraboloid
-  std::optional<int> degree, monge_degree;  // jet
+  std::optional<int> fit_degree;           // paraboloid
+  std::optional<int> degree, monge_degree; // jet
   std::string scalars;
-  bool tetrahedral = false;  // INPUT is a Medit .mesh
+  bool tetrahedral = false; // INPUT is a Medit .mesh
   int threads = 0;
   Quantity color_by = Quantity::mean;
 };

@@ -60,7 +60,7 @@ int run_tetrahedral(const Options& o)
 {
   const Tetrahedral_input input = read_tetrahedral_input(o.input, o.scalars);
   const Tetrahedral_estimates estimates = estimate_tetrahedral(o, input);
-  if (!o.output.empty()) {  // CSV: parse_arguments refuses PLY for tetrahedral input
+  if (!o.output.empty()) { // CSV: parse_arguments refuses PLY for tetrahedral input
     Atomic_file out(o.output);
     write_tetrahedral_csv(out, estimates.rows);
     out.commit();

@@ -40,8 +40,8 @@ double run_with_threads(int threads, Estimate estimate)
 #ifdef CGAL_LINKED_WITH_TBB
       std::unique_ptr<tbb::global_control> limit;
       if (threads > 1)
-        limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                      std::size_t(threads));
+        limit =
+          std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
       estimate(CGAL::Parallel_tag());
 #else
       estimate(CGAL::Sequential_tag());

@@ -51,7 +51,7 @@ void run_surface_input(const std::string& path)
   o.threads = 1;
   const Soup soup = read_input(path);
   std::vector<V> file_to_mesh;
-  Silence_cerr silence;  // repair notes
+  Silence_cerr silence; // repair notes
   Mesh mesh = build_mesh(soup, file_to_mesh);
   check_rows(estimate(o, mesh, std::move(file_to_mesh)), soup.points.size());
 }

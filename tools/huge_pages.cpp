@@ -46,7 +46,7 @@ void* allocate(std::size_t size)
   const std::size_t rounded = (size + huge_page - 1) & ~(huge_page - 1);
   void* block = std::aligned_alloc(huge_page, rounded);
   if (block != nullptr)
-    madvise(block, rounded, MADV_HUGEPAGE);  // advice: where refused, small pages
+    madvise(block, rounded, MADV_HUGEPAGE); // advice: where refused, small pages
   return block;
 }
 

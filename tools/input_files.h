@@ -27,7 +27,10 @@ std::uintmax_t check_readable(const std::string& path);
 class File_text
 {
 public:
-  explicit File_text(std::size_t size) : data_(new char[size]), size_(size) {}
+  explicit File_text(std::size_t size)
+      : data_(new char[size])
+      , size_(size)
+  {}
   char* data() { return data_.get(); }
   std::string_view view() const { return std::string_view(data_.get(), size_); }
 

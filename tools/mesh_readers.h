@@ -48,7 +48,9 @@ std::string describe(const What& what)
 class Scanner
 {
 public:
-  explicit Scanner(std::string_view text) : text_(text) {}
+  explicit Scanner(std::string_view text)
+      : text_(text)
+  {}
 
   // Skips whitespace and comments; true if a token follows.
   bool more()
@@ -102,8 +104,8 @@ public:
     if (ec != std::errc() || end != word.data() + word.size())
       fail("expected an integer for " + describe(what) + ", got '" + printable(word) + "'");
     if (value < min_value || value > max_value)
-      fail(describe(what) + " is " + std::to_string(value) + ", out of the range " + std::to_string(min_value) +
-           ".." + std::to_string(max_value));
+      fail(describe(what) + " is " + std::to_string(value) + ", out of the range " + std::to_string(min_value) + ".." +
+           std::to_string(max_value));
     return value;
   }
 
@@ -126,7 +128,7 @@ public:
   {
     std::string_view word = token(what);
     const std::string_view original = word;
-    if (word.size() > 1 && word[0] == '+')  // from_chars does not take a '+' sign
+    if (word.size() > 1 && word[0] == '+') // from_chars does not take a '+' sign
       word.remove_prefix(1);
     double value = 0;
     const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
@@ -249,7 +251,7 @@ Polygon_soup_data<Point3> read_off(std::string_view text)
 {
   Scanner in(text);
   std::string_view header = in.token("the OFF header");
-  int extra_min = 0, extra_max = 0;  // per-vertex values after x y z
+  int extra_min = 0, extra_max = 0; // per-vertex values after x y z
   const auto prefix = [&](std::string_view p, int values_min, int values_max) {
     if (header.substr(0, p.size()) == p) {
       header.remove_prefix(p.size());
@@ -258,7 +260,7 @@ Polygon_soup_data<Point3> read_off(std::string_view text)
     }
   };
   prefix("ST", 2, 2);
-  prefix("C", 3, 4);  // RGB or RGBA
+  prefix("C", 3, 4); // RGB or RGBA
   prefix("N", 3, 3);
   if (header != "OFF")
     in.fail("unsupported or missing OFF header (expected OFF, COFF, NOFF, STOFF or a combination)");
@@ -270,7 +272,7 @@ Polygon_soup_data<Point3> read_off(std::string_view text)
   const std::size_t vertices = in.count("vertices", 3);
   const std::size_t faces = in.count("faces", 2);
   if (in.more_on_line())
-    in.integer("the number of edges", 0, LLONG_MAX);  // unused, and optional in practice
+    in.integer("the number of edges", 0, LLONG_MAX); // unused, and optional in practice
 
   Polygon_soup_data<Point3> soup;
   soup.points.reserve(vertices);
@@ -291,7 +293,8 @@ Polygon_soup_data<Point3> read_off(std::string_view text)
     if (n == 0)
       in.fail(what() + " has no vertices");
     for (std::size_t k = 0; k < n; ++k)
-      soup.faces.add_index(static_cast<std::size_t>(in.integer([&] { return "a vertex index of " + what(); }, 0, last)));
+      soup.faces.add_index(
+        static_cast<std::size_t>(in.integer([&] { return "a vertex index of " + what(); }, 0, last)));
     soup.faces.end_polygon();
     in.skip_numbers_on_line(what, 0, 4);
   }
@@ -303,7 +306,7 @@ Polygon_soup_data<Point3> read_off(std::string_view text)
 struct Tetrahedral_mesh_data
 {
   std::vector<std::array<double, 3>> points;
-  std::vector<std::array<std::size_t, 4>> cells;  // indices from 0
+  std::vector<std::array<std::size_t, 4>> cells; // indices from 0
 };
 
 namespace internal {
@@ -320,11 +323,22 @@ inline void read_medit_preamble(Scanner& in)
 // Sections of a .mesh file the tool does not use, with the numbers an item has.
 inline int ignored_medit_section_width(std::string_view keyword)
 {
-  static const std::pair<std::string_view, int> sections[] = {
-    {"Edges", 3},   {"Triangles", 4},        {"Quadrilaterals", 5},  {"Hexahedra", 9},
-    {"Prisms", 7},  {"Corners", 1},          {"Ridges", 1},          {"RequiredVertices", 1},
-    {"RequiredEdges", 1}, {"RequiredTriangles", 1}, {"RequiredQuadrilaterals", 1}, {"RequiredTetrahedra", 1},
-    {"Normals", 3}, {"NormalAtVertices", 2}, {"Tangents", 3},        {"TangentAtVertices", 2}};
+  static const std::pair<std::string_view, int> sections[] = {{"Edges", 3},
+                                                              {"Triangles", 4},
+                                                              {"Quadrilaterals", 5},
+                                                              {"Hexahedra", 9},
+                                                              {"Prisms", 7},
+                                                              {"Corners", 1},
+                                                              {"Ridges", 1},
+                                                              {"RequiredVertices", 1},
+                                                              {"RequiredEdges", 1},
+                                                              {"RequiredTriangles", 1},
+                                                              {"RequiredQuadrilaterals", 1},
+                                                              {"RequiredTetrahedra", 1},
+                                                              {"Normals", 3},
+                                                              {"NormalAtVertices", 2},
+                                                              {"Tangents", 3},
+                                                              {"TangentAtVertices", 2}};
   for (const auto& [name, width] : sections)
     if (name == keyword)
       return width;

@@ -10,8 +10,8 @@
 #include <cstdint>
 #include <iostream>
 #include <limits>
-#include <optional>
 #include <numeric>
+#include <optional>
 #include <string>
 #include <tuple>
 
@@ -115,16 +115,18 @@ public:
   };
 
   template <typename Polygon_range>
-  Halfedges_by_source(std::size_t points, const Polygon_range& polygons) : start_(points + 1, 0)
+  Halfedges_by_source(std::size_t points, const Polygon_range& polygons)
+      : start_(points + 1, 0)
   {
-    if (points > std::numeric_limits<std::uint32_t>::max() || polygons.size() > std::numeric_limits<std::uint32_t>::max())
+    if (points > std::numeric_limits<std::uint32_t>::max() ||
+        polygons.size() > std::numeric_limits<std::uint32_t>::max())
       fail("the mesh has more vertices or faces than CGAL::Surface_mesh can index");
     for (std::size_t f = 0; f < polygons.size(); ++f)
       for (std::size_t index : polygons[f])
         ++start_[index + 1];
     std::partial_sum(start_.begin(), start_.end(), start_.begin());
     halfedges_.resize(start_.back());
-    std::vector<std::size_t> next = start_;  // where the next halfedge of each source goes
+    std::vector<std::size_t> next = start_; // where the next halfedge of each source goes
     for (std::size_t f = 0; f < polygons.size(); ++f) {
       const auto& polygon = polygons[f];
       for (std::size_t k = 0; k < polygon.size(); ++k)
@@ -172,10 +174,10 @@ private:
 // What stands between simple polygons and a polygon mesh with a vertex per point.
 struct Topology
 {
-  bool directed_edges_unique = true;  // no edge twice in one orientation
-  bool one_fan_per_vertex = true;     // (if the above) the polygons around each vertex are one fan
-  bool isolated_points = false;       // a point in no polygon
-  bool duplicate_polygons = false;    // a polygon twice, in either orientation
+  bool directed_edges_unique = true; // no edge twice in one orientation
+  bool one_fan_per_vertex = true;    // (if the above) the polygons around each vertex are one fan
+  bool isolated_points = false;      // a point in no polygon
+  bool duplicate_polygons = false;   // a polygon twice, in either orientation
 
   bool polygon_mesh() const { return directed_edges_unique && one_fan_per_vertex; }
 };
@@ -211,12 +213,12 @@ Topology topology(const Halfedges_by_source& halfedges, const Polygon_range& pol
       h = same_last;
     }
     if (!t.directed_edges_unique)
-      continue;  // a fan is not well defined
+      continue; // a fan is not well defined
     std::size_t fan_starts = 0;
     const Halfedges_by_source::Halfedge* start = halfedges.begin(v);
     for (auto h = halfedges.begin(v); h != halfedges.end(v); ++h) {
       if (!halfedges.find(v, neighbor_in(polygons[h->face], v, -1))) {
-        ++fan_starts;  // the polygon before h around v is missing: a fan starts at h
+        ++fan_starts; // the polygon before h around v is missing: a fan starts at h
         start = h;
       }
     }
@@ -261,17 +263,17 @@ bool orient_as_cgal(const Halfedges_by_source& halfedges, Polygons& polygons, st
         const std::size_t same = std::size_t(same_last - same_first);
         const std::size_t opposite = std::size_t(opposite_last - opposite_first);
         if (same + opposite > 2)
-          return false;  // a non-manifold edge
+          return false; // a non-manifold edge
         if (same + opposite == 1)
-          continue;  // a boundary edge
-        const std::size_t g = same == 2 ? (same_first->face == f ? same_first[1].face : same_first->face)
-                                        : opposite_first->face;
+          continue; // a boundary edge
+        const std::size_t g =
+          same == 2 ? (same_first->face == f ? same_first[1].face : same_first->face) : opposite_first->face;
         const auto p = static_cast<signed char>(parity[f] ^ (same == 2));
         if (parity[g] < 0) {
           parity[g] = p;
           stack.push_back(g);
         } else if (parity[g] != p) {
-          return false;  // a non-orientable component
+          return false; // a non-orientable component
         }
       }
     }
@@ -449,8 +451,7 @@ Mesh repaired_mesh(const Soup& soup, std::vector<V>& file_to_mesh)
   if (distinct < file_points)
     notes.push_back("merged " + std::to_string(file_points - distinct) + " duplicate points");
   if (faces_kept < soup.faces.size())
-    notes.push_back("dropped " + std::to_string(soup.faces.size() - faces_kept) +
-                    " degenerate or duplicate faces");
+    notes.push_back("dropped " + std::to_string(soup.faces.size() - faces_kept) + " degenerate or duplicate faces");
 
   std::size_t reoriented = 0;
   bool oriented = true;
@@ -458,7 +459,7 @@ Mesh repaired_mesh(const Soup& soup, std::vector<V>& file_to_mesh)
     std::vector<std::size_t> reversed;
     if (orient_as_cgal(*halfedges, polygons, reversed)) {
       analyse();
-      if (!t.polygon_mesh())  // CGAL would split vertices too: undone, and left to CGAL
+      if (!t.polygon_mesh()) // CGAL would split vertices too: undone, and left to CGAL
         for (std::size_t f : reversed)
           std::reverse(polygons[f].begin(), polygons[f].end());
       reoriented = reversed.size();

@@ -30,9 +30,10 @@ void print_ball(double radius, double mean_edge_length, const Ball_size& size, s
 {
   std::ostringstream mean;
   mean << std::fixed << std::setprecision(1) << size.mean;
-  std::cout << "radius: " << radius << " (" << radius / mean_edge_length << " mean edge lengths of "
-            << mean_edge_length << ")\n"
-            << "mean neighborhood: " << mean.str() << " vertices in a ball (the vertex included, before a fit widens it";
+  std::cout << "radius: " << radius << " (" << radius / mean_edge_length << " mean edge lengths of " << mean_edge_length
+            << ")\n"
+            << "mean neighborhood: " << mean.str()
+            << " vertices in a ball (the vertex included, before a fit widens it";
   if (size.sampled < vertices)
     std::cout << "; over " << size.sampled << " evenly spaced vertices";
   std::cout << ")\n";
@@ -47,10 +48,18 @@ void print_estimates(const Rows& rows, std::size_t vertices, double seconds)
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const auto r = rows[i];
     switch (r.status) {
-      case CE::Estimation_status::ok: ++ok; break;
-      case CE::Estimation_status::widened: ++widened; break;
-      case CE::Estimation_status::fallback: ++fallback; break;
-      default: ++failed; continue;
+      case CE::Estimation_status::ok:
+        ++ok;
+        break;
+      case CE::Estimation_status::widened:
+        ++widened;
+        break;
+      case CE::Estimation_status::fallback:
+        ++fallback;
+        break;
+      default:
+        ++failed;
+        continue;
     }
     H.push_back(r.mean);
     K.push_back(r.gaussian);
@@ -62,7 +71,7 @@ void print_estimates(const Rows& rows, std::size_t vertices, double seconds)
   print_range("mean curvature H", H);
   print_range("Gaussian curvature K", K);
   std::cout << "ok: " << ok << ", widened: " << widened;
-  if (fallback > 0)  // the curve network, the paraboloid fit and jet fitting have one
+  if (fallback > 0) // the curve network, the paraboloid fit and jet fitting have one
     std::cout << ", fallback: " << fallback;
   std::cout << ", failed (not estimable): " << failed << '\n';
 }

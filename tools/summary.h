@@ -17,7 +17,8 @@ namespace ce_tool {
 
 void print_surface_summary(const Options& o, const Soup& soup, const Mesh& mesh, const Surface_estimates& rows);
 
-void print_tetrahedral_summary(const Options& o, const Tetrahedral_input& input, const Tetrahedral_estimates& estimates);
+void print_tetrahedral_summary(const Options& o, const Tetrahedral_input& input,
+                               const Tetrahedral_estimates& estimates);
 
 } // namespace ce_tool
 

@@ -34,8 +34,8 @@ void run_fit(const Options& o, const Mesh& mesh, const NamedParameters& np)
 }
 
 template <typename Tag>
-void run_estimator(const Options& o, const Mesh& mesh, double ball_radius,
-                   Mesh::Property_map<V, double> H, Mesh::Property_map<V, double> K,
+void run_estimator(const Options& o, const Mesh& mesh, double ball_radius, Mesh::Property_map<V, double> H,
+                   Mesh::Property_map<V, double> K,
                    Mesh::Property_map<V, CE::Principal_curvatures_and_directions<Kernel>> pcd,
                    Mesh::Property_map<V, CE::Estimation_status> status)
 {
@@ -58,8 +58,12 @@ void run_estimator(const Options& o, const Mesh& mesh, double ball_radius,
       else
         CE::gauss_map_curvatures<Tag>(mesh, ring_np);
       break;
-    case Method::taubin: CE::taubin_curvatures<Tag>(mesh, ring_np); break;
-    case Method::chen_schmitt: CE::chen_schmitt_curvatures<Tag>(mesh, ring_np); break;
+    case Method::taubin:
+      CE::taubin_curvatures<Tag>(mesh, ring_np);
+      break;
+    case Method::chen_schmitt:
+      CE::chen_schmitt_curvatures<Tag>(mesh, ring_np);
+      break;
     case Method::curve_network:
       CE::curve_network_curvatures<Tag>(mesh, np.extrapolation_order(o.order.value_or(1)));
       break;
@@ -74,7 +78,10 @@ Row Surface_estimates::operator[](std::size_t i) const
   if (v == V() || status[v] == CE::Estimation_status::not_estimable)
     return failed_row();
   const auto& c = pcd[v];
-  return Row{c.max_curvature, c.min_curvature, H[v], K[v],
+  return Row{c.max_curvature,
+             c.min_curvature,
+             H[v],
+             K[v],
              {c.max_direction.x(), c.max_direction.y(), c.max_direction.z()},
              {c.min_direction.x(), c.min_direction.y(), c.min_direction.z()},
              status[v]};
@@ -94,9 +101,8 @@ Surface_estimates estimate(const Options& o, Mesh& mesh, std::vector<V> file_to_
     e.mean_edge_length = CE::mean_edge_length(mesh);
     e.ball_radius = ball_radius(*o.radius, e.mean_edge_length);
   }
-  e.seconds = run_with_threads(o.threads, [&](auto tag) {
-    run_estimator<decltype(tag)>(o, mesh, e.ball_radius, e.H, e.K, e.pcd, e.status);
-  });
+  e.seconds = run_with_threads(
+    o.threads, [&](auto tag) { run_estimator<decltype(tag)>(o, mesh, e.ball_radius, e.H, e.K, e.pcd, e.status); });
   return e;
 }
 

@@ -38,7 +38,7 @@ struct Surface_estimates
   Mesh::Property_map<V, CE::Principal_curvatures_and_directions<Kernel>> pcd;
   Mesh::Property_map<V, CE::Estimation_status> status;
   std::vector<V> file_to_mesh;
-  double seconds = 0;  // the estimator's time
+  double seconds = 0; // the estimator's time
   // With --radius: the balls' radius in mesh units and the mean edge length of the
   // mesh; 0 without it (or where the mesh is empty).
   double ball_radius = 0, mean_edge_length = 0;

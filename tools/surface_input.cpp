@@ -126,13 +126,14 @@ Soup read_input(const std::string& path)
   for (std::size_t i = 0; i < soup.points.size(); ++i) {
     const Point& p = soup.points[i];
     if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-      fail("invalid file '" + path + "': vertex " + std::to_string(i) + " has a non-finite (NaN or infinite) coordinate");
+      fail("invalid file '" + path + "': vertex " + std::to_string(i) +
+           " has a non-finite (NaN or infinite) coordinate");
   }
   for (std::size_t f = 0; f < soup.faces.size(); ++f)
     for (std::size_t index : soup.faces[f])
       if (index >= soup.points.size())
-        fail("malformed file '" + path + "': face " + std::to_string(f) + " refers to vertex " +
-             std::to_string(index) + " but the file has " + std::to_string(soup.points.size()) + " vertices");
+        fail("malformed file '" + path + "': face " + std::to_string(f) + " refers to vertex " + std::to_string(index) +
+             " but the file has " + std::to_string(soup.points.size()) + " vertices");
   return soup;
 }
 

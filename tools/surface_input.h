@@ -22,7 +22,9 @@ struct Silence_cerr
 {
   std::ostringstream sink;
   std::streambuf* saved;
-  Silence_cerr() : saved(std::cerr.rdbuf(sink.rdbuf())) {}
+  Silence_cerr()
+      : saved(std::cerr.rdbuf(sink.rdbuf()))
+  {}
   ~Silence_cerr() { std::cerr.rdbuf(saved); }
 };
 

@@ -57,7 +57,10 @@ std::vector<Eigen::Vector4d> graph_points(const Tetrahedral_input& input)
 // The tetrahedra's edges as a graph of points of R^4, which --radius measures.
 struct Graph
 {
-  explicit Graph(const Tetrahedral_input& input) : stars(input.mesh), points(graph_points(input)) {}
+  explicit Graph(const Tetrahedral_input& input)
+      : stars(input.mesh)
+      , points(graph_points(input))
+  {}
 
   // The mean length of the edges (each edge once), over those of finite length; 0
   // where there is none.
@@ -108,14 +111,16 @@ Tetrahedral_input read_tetrahedral_input(const std::string& mesh_path, const std
     switch (CGAL::orientation(p[c[0]], p[c[1]], p[c[2]], p[c[3]])) {
       case CGAL::COPLANAR:
         fail("degenerate file '" + mesh_path + "': tetrahedron " + std::to_string(t + 1) + " has zero volume");
-      case CGAL::NEGATIVE: std::swap(c[2], c[3]); break;
-      default: break;
+      case CGAL::NEGATIVE:
+        std::swap(c[2], c[3]);
+        break;
+      default:
+        break;
     }
   }
   const std::size_t vertices = data.points.size();
-  input.scalars = read_strictly(scalars_path(mesh_path, scalars), [vertices](std::string_view text) {
-    return read_medit_sol(text, vertices);
-  });
+  input.scalars = read_strictly(scalars_path(mesh_path, scalars),
+                                [vertices](std::string_view text) { return read_medit_sol(text, vertices); });
   return input;
 }
 
@@ -150,8 +155,8 @@ Tetrahedral_estimates estimate_tetrahedral(const Options& o, const Tetrahedral_i
 
   e.rows.resize(n);
   for (std::size_t v = 0; v < n; ++v)
-    e.rows[v] = {principal[v].max_curvature, principal[v].mid_curvature, principal[v].min_curvature, H[v], K[v],
-                 status[v]};
+    e.rows[v] = {
+      principal[v].max_curvature, principal[v].mid_curvature, principal[v].min_curvature, H[v], K[v], status[v]};
   return e;
 }
 

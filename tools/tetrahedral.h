@@ -22,7 +22,7 @@ using Tetrahedral_mesh = CE::Indexed_tetrahedral_mesh<Point>;
 struct Tetrahedral_input
 {
   Tetrahedral_mesh mesh;
-  std::vector<double> scalars;  // f at the vertices
+  std::vector<double> scalars; // f at the vertices
 };
 
 // The syntax and the combinatorics are the reader's (mesh_readers.h); the geometry
@@ -42,8 +42,8 @@ struct Tetrahedral_row
 
 struct Tetrahedral_estimates
 {
-  std::vector<Tetrahedral_row> rows;  // a row per vertex of the .mesh, in its order
-  double seconds = 0;                 // the estimator's time
+  std::vector<Tetrahedral_row> rows; // a row per vertex of the .mesh, in its order
+  double seconds = 0;                // the estimator's time
   // With --radius: the balls' radius and the mean edge length, both in R^4 (the
   // points (x, y, z, f)), and the balls' mean size; zeros without it.
   double ball_radius = 0, mean_edge_length = 0;

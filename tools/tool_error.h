@@ -12,7 +12,10 @@ namespace ce_tool {
 struct Tool_error : std::runtime_error
 {
   int code;
-  Tool_error(const std::string& message, int code = 1) : std::runtime_error(message), code(code) {}
+  Tool_error(const std::string& message, int code = 1)
+      : std::runtime_error(message)
+      , code(code)
+  {}
 };
 
 [[noreturn]] inline void fail(const std::string& message, int code = 1) { throw Tool_error(message, code); }

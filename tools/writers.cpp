@@ -46,7 +46,7 @@ void write_csv(Atomic_file& file, const char* header, const Rows& rows)
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const auto r = rows[i];
     const auto values = r.values();
-    std::array<char, std::tuple_size_v<decltype(values)> * (double_room + 1)> row;
+    std::array<char, std::tuple_size_v<decltype(values)>*(double_room + 1)> row;
     char* end = row.data();
     for (double x : values) {
       end = put_double(end, x);
@@ -62,10 +62,14 @@ void write_csv(Atomic_file& file, const char* header, const Rows& rows)
 double quantity(const Row& r, Quantity q)
 {
   switch (q) {
-    case Quantity::k_max: return r.k_max;
-    case Quantity::k_min: return r.k_min;
-    case Quantity::mean: return r.mean;
-    default: return r.gaussian;
+    case Quantity::k_max:
+      return r.k_max;
+    case Quantity::k_min:
+      return r.k_min;
+    case Quantity::mean:
+      return r.mean;
+    default:
+      return r.gaussian;
   }
 }
 

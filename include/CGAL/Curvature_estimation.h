@@ -6,7 +6,6 @@
 #include <CGAL/Curvature_estimation/Neighbor_weighting.h>
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/Vertex_normal_method.h>
-#include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/chen_schmitt.h>
 #include <CGAL/Curvature_estimation/curve_network.h>
 #include <CGAL/Curvature_estimation/gauss_map.h>
@@ -14,6 +13,7 @@
 #include <CGAL/Curvature_estimation/jet_fitting.h>
 #include <CGAL/Curvature_estimation/mean_edge_length.h>
 #include <CGAL/Curvature_estimation/paraboloid_fitting.h>
+#include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/taubin.h>
 #include <CGAL/Curvature_estimation/vertex_normals.h>
 

@@ -30,7 +30,7 @@ Estimates<Kernel> run_with_all_outputs(const Mesh& mesh, Run run, const Extra& e
   using Vertex = typename Mesh::Vertex_index;
   using Curvatures = CGAL::Curvature_estimation::Principal_curvatures_and_directions<Kernel>;
   using Status = CGAL::Curvature_estimation::Estimation_status;
-  Mesh& m = const_cast<Mesh&>(mesh);  // only to add and remove the output maps
+  Mesh& m = const_cast<Mesh&>(mesh); // only to add and remove the output maps
   auto principal = m.template add_property_map<Vertex, Curvatures>("v:test_pcd").first;
   auto mean = m.template add_property_map<Vertex, double>("v:test_H").first;
   auto gaussian = m.template add_property_map<Vertex, double>("v:test_K").first;
@@ -95,6 +95,6 @@ auto exact_normal_map(Mesh& mesh, const std::vector<Exact_curvature>& exact)
   return normals;
 }
 
-}  // namespace ce_test
+} // namespace ce_test
 
-#endif  // CE_TEST_ESTIMATOR_RUNS_H
+#endif // CE_TEST_ESTIMATOR_RUNS_H

@@ -48,8 +48,7 @@ struct Implicit_surface
 inline Implicit_surface implicit_ellipsoid(double a, double b, double c)
 {
   const Eigen::Vector3d inv_sq(1.0 / (a * a), 1.0 / (b * b), 1.0 / (c * c));
-  return {"ellipsoid",
-          [inv_sq](const Eigen::Vector3d& p) { return p.cwiseProduct(p).dot(inv_sq) - 1.0; },
+  return {"ellipsoid", [inv_sq](const Eigen::Vector3d& p) { return p.cwiseProduct(p).dot(inv_sq) - 1.0; },
           [inv_sq](const Eigen::Vector3d& p) { return Eigen::Vector3d(2.0 * p.cwiseProduct(inv_sq)); },
           [inv_sq](const Eigen::Vector3d&) { return Eigen::Matrix3d(2.0 * inv_sq.asDiagonal()); },
           1.1 * std::max({a, b, c})};
@@ -92,12 +91,14 @@ inline Implicit_surface gaussian_blobs()
   return {"blobs",
           [=](const Eigen::Vector3d& p) {
             double f = level;
-            for (const auto& c : centres) f -= std::exp(-(p - c).squaredNorm() * inv_s2);
+            for (const auto& c : centres)
+              f -= std::exp(-(p - c).squaredNorm() * inv_s2);
             return f;
           },
           [=](const Eigen::Vector3d& p) {
             Eigen::Vector3d g = Eigen::Vector3d::Zero();
-            for (const auto& c : centres) g += 2.0 * inv_s2 * std::exp(-(p - c).squaredNorm() * inv_s2) * (p - c);
+            for (const auto& c : centres)
+              g += 2.0 * inv_s2 * std::exp(-(p - c).squaredNorm() * inv_s2) * (p - c);
             return g;
           },
           [=](const Eigen::Vector3d& p) {
@@ -118,7 +119,8 @@ inline Eigen::Vector3d project_onto(const Implicit_surface& s, Eigen::Vector3d p
 {
   for (int step = 0; step < 10; ++step) {
     const double f = s.value(p);
-    if (std::abs(f) < 1e-14) break;
+    if (std::abs(f) < 1e-14)
+      break;
     const Eigen::Vector3d g = s.gradient(p);
     p -= (f / g.squaredNorm()) * g;
   }
@@ -134,28 +136,33 @@ inline Eigen::Vector3d project_onto(const Implicit_surface& s, Eigen::Vector3d p
 inline Soup marching_tetrahedra_soup(const Implicit_surface& s, std::size_t cells,
                                      const Eigen::Vector3d& offset = Eigen::Vector3d::Zero())
 {
-  if (cells < 2) throw std::invalid_argument("ce_test: marching_tetrahedra_soup needs cells >= 2");
+  if (cells < 2)
+    throw std::invalid_argument("ce_test: marching_tetrahedra_soup needs cells >= 2");
   const std::size_t n = cells + 1; // grid points per axis
   const double h = 2.0 * s.half_width / static_cast<double>(cells);
   const Eigen::Vector3d corner = Eigen::Vector3d::Constant(-s.half_width) + h * offset;
   auto index = [n](std::size_t i, std::size_t j, std::size_t k) { return (k * n + j) * n + i; };
   auto grid_point = [&](std::size_t id) {
-    return Eigen::Vector3d(corner.x() + h * static_cast<double>(id % n), corner.y() + h * static_cast<double>(id / n % n),
+    return Eigen::Vector3d(corner.x() + h * static_cast<double>(id % n),
+                           corner.y() + h * static_cast<double>(id / n % n),
                            corner.z() + h * static_cast<double>(id / (n * n)));
   };
   std::vector<double> values(n * n * n);
-  for (std::size_t id = 0; id < values.size(); ++id) values[id] = s.value(grid_point(id));
+  for (std::size_t id = 0; id < values.size(); ++id)
+    values[id] = s.value(grid_point(id));
 
   Soup out;
   std::unordered_map<std::uint64_t, std::size_t> edge_vertex;
   // Code c in [0, 8) of a cube corner: bit a set for a step of one along axis a.
   std::size_t corner_id[8];
   auto vertex_on = [&](int ca, int cb) { // a point of the edge between corners ca and cb of a Kuhn tetrahedron
-    if ((ca & cb) != ca) std::swap(ca, cb); // the lower end: a Kuhn edge steps up along some axes
+    if ((ca & cb) != ca)
+      std::swap(ca, cb); // the lower end: a Kuhn edge steps up along some axes
     const std::size_t a = corner_id[ca], b = corner_id[cb];
     const std::uint64_t key = 8 * static_cast<std::uint64_t>(a) + static_cast<std::uint64_t>(ca ^ cb);
     const auto found = edge_vertex.find(key);
-    if (found != edge_vertex.end()) return found->second;
+    if (found != edge_vertex.end())
+      return found->second;
     const double t = values[a] / (values[a] - values[b]);
     const Eigen::Vector3d pa = grid_point(a);
     out.points.push_back(project_onto(s, pa + t * (grid_point(b) - pa)));
@@ -185,15 +192,19 @@ inline Soup marching_tetrahedra_soup(const Implicit_surface& s, std::size_t cell
           corner_id[c] = index(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1));
           inside_corners += values[corner_id[c]] < 0.0;
         }
-        if (inside_corners == 0 || inside_corners == 8) continue;
+        if (inside_corners == 0 || inside_corners == 8)
+          continue;
         for (const auto& tet : tetrahedra) {
           bool inside[4];
           int count = 0;
-          for (int v = 0; v < 4; ++v) count += (inside[v] = values[corner_id[tet[v]]] < 0.0);
-          if (count == 0 || count == 4) continue;
+          for (int v = 0; v < 4; ++v)
+            count += (inside[v] = values[corner_id[tet[v]]] < 0.0);
+          if (count == 0 || count == 4)
+            continue;
           if (count != 2) { // one corner on its own side: the triangle separating it, facing away from it when inside
             int lone = 0;
-            while (inside[lone] != (count == 1)) ++lone;
+            while (inside[lone] != (count == 1))
+              ++lone;
             const int* f = opposite[lone];
             const std::size_t a = vertex_on(tet[lone], tet[f[0]]), b = vertex_on(tet[lone], tet[f[1]]),
                               c = vertex_on(tet[lone], tet[f[2]]);
@@ -203,11 +214,14 @@ inline Soup marching_tetrahedra_soup(const Implicit_surface& s, std::size_t cell
           // Two inside (u, w) and two outside (x, y): the quad on edges ux, uy, wy, wx, outward when
           // (u, w, x, y) is an even permutation of the corners, as (0, 1, 2, 3) is.
           int order[4], in = 0, outside = 2;
-          for (int v = 0; v < 4; ++v) order[inside[v] ? in++ : outside++] = v;
+          for (int v = 0; v < 4; ++v)
+            order[inside[v] ? in++ : outside++] = v;
           int inversions = 0;
           for (int a = 0; a < 4; ++a)
-            for (int b = a + 1; b < 4; ++b) inversions += order[a] > order[b];
-          if (inversions % 2 == 1) std::swap(order[2], order[3]);
+            for (int b = a + 1; b < 4; ++b)
+              inversions += order[a] > order[b];
+          if (inversions % 2 == 1)
+            std::swap(order[2], order[3]);
           const int u = tet[order[0]], w = tet[order[1]], x = tet[order[2]], y = tet[order[3]];
           const std::size_t ux = vertex_on(u, x), uy = vertex_on(u, y), wy = vertex_on(w, y), wx = vertex_on(w, x);
           out.faces.push_back({ux, uy, wy});
@@ -222,7 +236,8 @@ inline std::vector<Exact_curvature> implicit_curvatures(const Implicit_surface& 
 {
   std::vector<Exact_curvature> out;
   out.reserve(soup.points.size());
-  for (const auto& p : soup.points) out.push_back(implicit_curvature(s.gradient(p), s.hessian(p)));
+  for (const auto& p : soup.points)
+    out.push_back(implicit_curvature(s.gradient(p), s.hessian(p)));
   return out;
 }
 

@@ -22,7 +22,7 @@ namespace ce_test {
 /// on every standard library).
 inline double standard_normal(std::mt19937& gen)
 {
-  const double u = 1.0 - uniform01(gen);  // in (0, 1]
+  const double u = 1.0 - uniform01(gen); // in (0, 1]
   const double v = uniform01(gen);
   return std::sqrt(-2.0 * std::log(u)) * std::cos(6.283185307179586477 * v);
 }

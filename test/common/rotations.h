@@ -13,7 +13,8 @@ namespace ce_test {
 inline Eigen::Matrix3d rotation(double a, double b, double c)
 {
   return (Eigen::AngleAxisd(a, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(b, Eigen::Vector3d::UnitY()) *
-          Eigen::AngleAxisd(c, Eigen::Vector3d::UnitX())).toRotationMatrix();
+          Eigen::AngleAxisd(c, Eigen::Vector3d::UnitX()))
+    .toRotationMatrix();
 }
 
 } // namespace ce_test

@@ -14,7 +14,7 @@ namespace ce_test {
 // The property map of `mesh` named `name` with key `Key` and value `Value`, if there is one.
 template <typename Key, typename Value, typename Mesh>
 std::optional<typename Mesh::template Property_map<Key, Value>> find_property_map(const Mesh& mesh,
-                                                                                const std::string& name)
+                                                                                  const std::string& name)
 {
 #if CGAL_VERSION_MAJOR >= 6
   return mesh.template property_map<Key, Value>(name);

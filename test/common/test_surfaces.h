@@ -84,78 +84,68 @@ inline std::vector<Graph_function> hamann_table1_functions()
   using std::sqrt;
   std::vector<Graph_function> fs;
 
-  fs.push_back({"plane",
-                [](double x, double y) { return 0.2 * (x + y); },
-                [](double, double) { return 0.2; },
-                [](double, double) { return 0.2; },
-                [](double, double) { return 0.0; },
-                [](double, double) { return 0.0; },
-                [](double, double) { return 0.0; }});
+  fs.push_back({"plane", [](double x, double y) { return 0.2 * (x + y); }, [](double, double) { return 0.2; },
+                [](double, double) { return 0.2; }, [](double, double) { return 0.0; },
+                [](double, double) { return 0.0; }, [](double, double) { return 0.0; }});
 
   // s = sqrt(2 - x^2): s_x = -x/s, s_xx = -(s^2 + x^2)/s^3 = -2/s^3.
-  fs.push_back({"cylinder",
-                [](double x, double) { return sqrt(2.0 - x * x); },
-                [](double x, double) { return -x / sqrt(2.0 - x * x); },
-                [](double, double) { return 0.0; },
-                [](double x, double) { const double s = sqrt(2.0 - x * x); return -2.0 / (s * s * s); },
-                [](double, double) { return 0.0; },
-                [](double, double) { return 0.0; }});
+  fs.push_back({"cylinder", [](double x, double) { return sqrt(2.0 - x * x); },
+                [](double x, double) { return -x / sqrt(2.0 - x * x); }, [](double, double) { return 0.0; },
+                [](double x, double) {
+                  const double s = sqrt(2.0 - x * x);
+                  return -2.0 / (s * s * s);
+                },
+                [](double, double) { return 0.0; }, [](double, double) { return 0.0; }});
 
   // s = sqrt(4 - x^2 - y^2): s_x = -x/s, s_xx = -(4 - y^2)/s^3, s_xy = -xy/s^3, s_yy = -(4 - x^2)/s^3.
-  fs.push_back({"sphere",
-                [](double x, double y) { return sqrt(4.0 - x * x - y * y); },
+  fs.push_back({"sphere", [](double x, double y) { return sqrt(4.0 - x * x - y * y); },
                 [](double x, double y) { return -x / sqrt(4.0 - x * x - y * y); },
                 [](double x, double y) { return -y / sqrt(4.0 - x * x - y * y); },
-                [](double x, double y) { const double s = sqrt(4.0 - x * x - y * y); return -(4.0 - y * y) / (s * s * s); },
-                [](double x, double y) { const double s = sqrt(4.0 - x * x - y * y); return -x * y / (s * s * s); },
-                [](double x, double y) { const double s = sqrt(4.0 - x * x - y * y); return -(4.0 - x * x) / (s * s * s); }});
+                [](double x, double y) {
+                  const double s = sqrt(4.0 - x * x - y * y);
+                  return -(4.0 - y * y) / (s * s * s);
+                },
+                [](double x, double y) {
+                  const double s = sqrt(4.0 - x * x - y * y);
+                  return -x * y / (s * s * s);
+                },
+                [](double x, double y) {
+                  const double s = sqrt(4.0 - x * x - y * y);
+                  return -(4.0 - x * x) / (s * s * s);
+                }});
 
-  fs.push_back({"paraboloid",
-                [](double x, double y) { return 0.4 * (x * x + y * y); },
-                [](double x, double) { return 0.8 * x; },
-                [](double, double y) { return 0.8 * y; },
-                [](double, double) { return 0.8; },
-                [](double, double) { return 0.0; },
+  fs.push_back({"paraboloid", [](double x, double y) { return 0.4 * (x * x + y * y); },
+                [](double x, double) { return 0.8 * x; }, [](double, double y) { return 0.8 * y; },
+                [](double, double) { return 0.8; }, [](double, double) { return 0.0; },
                 [](double, double) { return 0.8; }});
 
-  fs.push_back({"hyperboloid",
-                [](double x, double y) { return 0.4 * (x * x - y * y); },
-                [](double x, double) { return 0.8 * x; },
-                [](double, double y) { return -0.8 * y; },
-                [](double, double) { return 0.8; },
-                [](double, double) { return 0.0; },
+  fs.push_back({"hyperboloid", [](double x, double y) { return 0.4 * (x * x - y * y); },
+                [](double x, double) { return 0.8 * x; }, [](double, double y) { return -0.8 * y; },
+                [](double, double) { return 0.8; }, [](double, double) { return 0.0; },
                 [](double, double) { return -0.8; }});
 
-  fs.push_back({"monkey_saddle",
-                [](double x, double y) { return 0.2 * (x * x * x - 3.0 * x * y * y); },
+  fs.push_back({"monkey_saddle", [](double x, double y) { return 0.2 * (x * x * x - 3.0 * x * y * y); },
                 [](double x, double y) { return 0.6 * (x * x - y * y); },
-                [](double x, double y) { return -1.2 * x * y; },
-                [](double x, double) { return 1.2 * x; },
-                [](double, double y) { return -1.2 * y; },
-                [](double x, double) { return -1.2 * x; }});
+                [](double x, double y) { return -1.2 * x * y; }, [](double x, double) { return 1.2 * x; },
+                [](double, double y) { return -1.2 * y; }, [](double x, double) { return -1.2 * x; }});
 
-  fs.push_back({"cubic",
-                [](double x, double y) { return 0.15 * (x * x * x + 2.0 * x * x * y - x * y + 2.0 * y * y); },
+  fs.push_back({"cubic", [](double x, double y) { return 0.15 * (x * x * x + 2.0 * x * x * y - x * y + 2.0 * y * y); },
                 [](double x, double y) { return 0.15 * (3.0 * x * x + 4.0 * x * y - y); },
                 [](double x, double y) { return 0.15 * (2.0 * x * x - x + 4.0 * y); },
                 [](double x, double y) { return 0.15 * (6.0 * x + 4.0 * y); },
-                [](double x, double) { return 0.15 * (4.0 * x - 1.0); },
-                [](double, double) { return 0.6; }});
+                [](double x, double) { return 0.15 * (4.0 * x - 1.0); }, [](double, double) { return 0.6; }});
 
-  fs.push_back({"exponential",
-                [](double x, double y) { return exp(-0.5 * (x * x + y * y)); },
+  fs.push_back({"exponential", [](double x, double y) { return exp(-0.5 * (x * x + y * y)); },
                 [](double x, double y) { return -x * exp(-0.5 * (x * x + y * y)); },
                 [](double x, double y) { return -y * exp(-0.5 * (x * x + y * y)); },
                 [](double x, double y) { return (x * x - 1.0) * exp(-0.5 * (x * x + y * y)); },
                 [](double x, double y) { return x * y * exp(-0.5 * (x * x + y * y)); },
                 [](double x, double y) { return (y * y - 1.0) * exp(-0.5 * (x * x + y * y)); }});
 
-  fs.push_back({"trigonometric",
-                [](double x, double y) { return 0.1 * (cos(pi * x) + cos(pi * y)); },
+  fs.push_back({"trigonometric", [](double x, double y) { return 0.1 * (cos(pi * x) + cos(pi * y)); },
                 [](double x, double) { return -0.1 * pi * sin(pi * x); },
                 [](double, double y) { return -0.1 * pi * sin(pi * y); },
-                [](double x, double) { return -0.1 * pi * pi * cos(pi * x); },
-                [](double, double) { return 0.0; },
+                [](double x, double) { return -0.1 * pi * pi * cos(pi * x); }, [](double, double) { return 0.0; },
                 [](double, double y) { return -0.1 * pi * pi * cos(pi * y); }});
 
   return fs;
@@ -178,15 +168,15 @@ struct Table1_row
 inline std::vector<Table1_row> hamann_table1_published()
 {
   return {
-      {0.0, 0.0, 0.0, 0.0},                   // 1 plane
-      {0.000291, 0.000035, 0.000132, 0.000025}, // 2 cylinder
-      {0.000159, 0.000046, 0.000080, 0.000080}, // 3 sphere
-      {0.003073, 0.001342, 0.001358, 0.001684}, // 4 paraboloid
-      {0.002058, 0.002058, 0.001057, 0.001767}, // 5 hyperboloid
-      {0.004483, 0.004483, 0.001591, 0.007247}, // 6 monkey saddle
-      {0.002258, 0.003598, 0.001665, 0.002242}, // 7 cubic
-      {0.001757, 0.005546, 0.002722, 0.002602}, // 8 exponential
-      {0.002998, 0.002821, 0.001013, 0.003541}, // 9 trigonometric
+    {0.0, 0.0, 0.0, 0.0},                     // 1 plane
+    {0.000291, 0.000035, 0.000132, 0.000025}, // 2 cylinder
+    {0.000159, 0.000046, 0.000080, 0.000080}, // 3 sphere
+    {0.003073, 0.001342, 0.001358, 0.001684}, // 4 paraboloid
+    {0.002058, 0.002058, 0.001057, 0.001767}, // 5 hyperboloid
+    {0.004483, 0.004483, 0.001591, 0.007247}, // 6 monkey saddle
+    {0.002258, 0.003598, 0.001665, 0.002242}, // 7 cubic
+    {0.001757, 0.005546, 0.002722, 0.002602}, // 8 exponential
+    {0.002998, 0.002821, 0.001013, 0.003541}, // 9 trigonometric
   };
 }
 
@@ -209,8 +199,8 @@ namespace internal {
 
 /// Eigen-decomposition of the symmetric shape matrix [[a, b], [b, c]] given in the
 /// orthonormal tangent frame (e1, e2), e1 x e2 = n.
-inline Exact_curvature from_shape_matrix(const Eigen::Vector3d& n, const Eigen::Vector3d& e1,
-                                         const Eigen::Vector3d& e2, double a, double b, double c)
+inline Exact_curvature from_shape_matrix(const Eigen::Vector3d& n, const Eigen::Vector3d& e1, const Eigen::Vector3d& e2,
+                                         double a, double b, double c)
 {
   Exact_curvature r;
   const double m = 0.5 * (a + c);
@@ -231,9 +221,9 @@ inline Exact_curvature from_shape_matrix(const Eigen::Vector3d& n, const Eigen::
 /// Some unit vector orthogonal to the unit vector n.
 inline Eigen::Vector3d any_orthogonal(const Eigen::Vector3d& n)
 {
-  const Eigen::Vector3d axis = (std::abs(n.x()) < 0.6) ? Eigen::Vector3d::UnitX()
-                             : (std::abs(n.y()) < 0.6) ? Eigen::Vector3d::UnitY()
-                                                       : Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d axis = (std::abs(n.x()) < 0.6)   ? Eigen::Vector3d::UnitX()
+                               : (std::abs(n.y()) < 0.6) ? Eigen::Vector3d::UnitY()
+                                                         : Eigen::Vector3d::UnitZ();
   return (axis - axis.dot(n) * n).normalized();
 }
 
@@ -256,11 +246,9 @@ inline Exact_curvature graph_curvature(const Graph_function& g, double x, double
   const Eigen::Vector3d e1 = Eigen::Vector3d(1.0, 0.0, fx).normalized();
   const Eigen::Vector3d e2 = n.cross(e1).normalized();
   Eigen::Matrix2d P;
-  P << e1.x(), e2.x(),
-       e1.y(), e2.y();
+  P << e1.x(), e2.x(), e1.y(), e2.y();
   Eigen::Matrix2d II;
-  II << -fxx / l, -fxy / l,
-        -fxy / l, -fyy / l;
+  II << -fxx / l, -fxy / l, -fxy / l, -fyy / l;
   const Eigen::Matrix2d S = P.transpose() * II * P;
   return internal::from_shape_matrix(n, e1, e2, S(0, 0), 0.5 * (S(0, 1) + S(1, 0)), S(1, 1));
 }
@@ -355,8 +343,10 @@ struct Soup
 /// Which diagonal splits each grid quad ((i,j),(i+1,j),(i+1,j+1),(i,j+1)).
 enum class Diagonal
 {
-  main, ///< (i,j)-(i+1,j+1): triangles ((i,j),(i+1,j),(i+1,j+1)) and ((i,j),(i+1,j+1),(i,j+1)), as printed in Hamann's thesis
-  anti  ///< (i+1,j)-(i,j+1): triangles ((i,j),(i+1,j),(i,j+1)) and ((i+1,j),(i+1,j+1),(i,j+1)); reproduces Hamann's numbers
+  main, ///< (i,j)-(i+1,j+1): triangles ((i,j),(i+1,j),(i+1,j+1)) and ((i,j),(i+1,j+1),(i,j+1)), as printed in Hamann's
+        ///< thesis
+  anti  ///< (i+1,j)-(i,j+1): triangles ((i,j),(i+1,j),(i,j+1)) and ((i+1,j),(i+1,j+1),(i,j+1)); reproduces Hamann's
+        ///< numbers
 };
 
 namespace internal {
@@ -380,8 +370,10 @@ inline double grid_coordinate(std::size_t i, std::size_t n, double lo, double hi
 
 inline void check_grid_args(std::size_t n, double lo, double hi)
 {
-  if (n < 2) throw std::invalid_argument("ce_test: a grid needs n >= 2");
-  if (!(hi > lo)) throw std::invalid_argument("ce_test: a grid needs lo < hi");
+  if (n < 2)
+    throw std::invalid_argument("ce_test: a grid needs n >= 2");
+  if (!(hi > lo))
+    throw std::invalid_argument("ce_test: a grid needs lo < hi");
 }
 
 } // namespace internal
@@ -442,16 +434,17 @@ inline Soup jittered_grid_graph_soup(const Graph_function& g, std::size_t n, dou
       const double dy = a * uniform_symmetric(gen);
       const bool x_side = (i == 0 || i + 1 == n), y_side = (j == 0 || j + 1 == n);
       double x = internal::grid_coordinate(i, n, lo, hi), y = internal::grid_coordinate(j, n, lo, hi);
-      if (!x_side) x += dx; // x moves unless the vertex lies on a side x = lo or x = hi
-      if (!y_side) y += dy;
+      if (!x_side)
+        x += dx; // x moves unless the vertex lies on a side x = lo or x = hi
+      if (!y_side)
+        y += dy;
       s.points.emplace_back(x, y, g.f(x, y));
       s.params.emplace_back(x, y);
     }
   s.faces.reserve(2 * (n - 1) * (n - 1));
   for (std::size_t j = 0; j + 1 < n; ++j)
     for (std::size_t i = 0; i + 1 < n; ++i)
-      internal::add_grid_quads(s.faces, i + n * j, i + 1 + n * j, i + 1 + n * (j + 1), i + n * (j + 1),
-                               Diagonal::anti);
+      internal::add_grid_quads(s.faces, i + n * j, i + 1 + n * j, i + 1 + n * (j + 1), i + n * (j + 1), Diagonal::anti);
   return s;
 }
 
@@ -469,8 +462,10 @@ inline Soup jittered_grid_graph_soup(const Graph_function& g, std::size_t n, dou
 inline Soup delaunay_graph_soup(const Graph_function& g, std::size_t n_points, double lo = -1.0, double hi = 1.0,
                                 std::uint32_t seed = 1)
 {
-  if (n_points < 9) throw std::invalid_argument("ce_test: delaunay_graph_soup needs n_points >= 9");
-  if (!(hi > lo)) throw std::invalid_argument("ce_test: delaunay_graph_soup needs lo < hi");
+  if (n_points < 9)
+    throw std::invalid_argument("ce_test: delaunay_graph_soup needs n_points >= 9");
+  if (!(hi > lo))
+    throw std::invalid_argument("ce_test: delaunay_graph_soup needs lo < hi");
   std::mt19937 gen(seed);
   const std::size_t s = static_cast<std::size_t>(std::lround(std::sqrt(static_cast<double>(n_points))));
   const double L = hi - lo;
@@ -490,7 +485,8 @@ inline Soup delaunay_graph_soup(const Graph_function& g, std::size_t n_points, d
       const double t = static_cast<double>(k) * h + 0.3 * h * uniform_symmetric(gen);
       xy.push_back(start[side] + t * dir[side]);
     }
-  if (xy.size() > n_points) throw std::logic_error("ce_test: delaunay_graph_soup boundary count");
+  if (xy.size() > n_points)
+    throw std::logic_error("ce_test: delaunay_graph_soup boundary count");
 
   // Dart throwing with a bucket grid of cell size r.
   const double r = 0.5 * h;
@@ -500,7 +496,8 @@ inline Soup delaunay_graph_soup(const Graph_function& g, std::size_t n_points, d
     const long c = static_cast<long>(std::floor((v - lo) / r));
     return static_cast<std::size_t>(std::min<long>(std::max<long>(c, 0), static_cast<long>(nc) - 1));
   };
-  for (std::size_t i = 0; i < xy.size(); ++i) cells[cell_of(xy[i].x()) + nc * cell_of(xy[i].y())].push_back(i);
+  for (std::size_t i = 0; i < xy.size(); ++i)
+    cells[cell_of(xy[i].x()) + nc * cell_of(xy[i].y())].push_back(i);
   const std::size_t max_attempts = 1000 + 200 * n_points;
   std::size_t attempts = 0;
   while (xy.size() < n_points) {
@@ -512,8 +509,12 @@ inline Soup delaunay_graph_soup(const Graph_function& g, std::size_t n_points, d
     for (std::size_t yy = (cy > 0 ? cy - 1 : 0); ok && yy <= std::min(cy + 1, nc - 1); ++yy)
       for (std::size_t xx = (cx > 0 ? cx - 1 : 0); ok && xx <= std::min(cx + 1, nc - 1); ++xx)
         for (std::size_t q : cells[xx + nc * yy])
-          if ((xy[q] - p).squaredNorm() < r * r) { ok = false; break; }
-    if (!ok) continue;
+          if ((xy[q] - p).squaredNorm() < r * r) {
+            ok = false;
+            break;
+          }
+    if (!ok)
+      continue;
     cells[cx + nc * cy].push_back(xy.size());
     xy.push_back(p);
   }
@@ -524,14 +525,17 @@ inline Soup delaunay_graph_soup(const Graph_function& g, std::size_t n_points, d
   using DT = CGAL::Delaunay_triangulation_2<K, Tds>;
   std::vector<std::pair<K::Point_2, std::size_t>> input;
   input.reserve(xy.size());
-  for (std::size_t i = 0; i < xy.size(); ++i) input.emplace_back(K::Point_2(xy[i].x(), xy[i].y()), i);
+  for (std::size_t i = 0; i < xy.size(); ++i)
+    input.emplace_back(K::Point_2(xy[i].x(), xy[i].y()), i);
   DT dt(input.begin(), input.end());
-  if (dt.number_of_vertices() != xy.size()) throw std::logic_error("ce_test: duplicate Delaunay points");
+  if (dt.number_of_vertices() != xy.size())
+    throw std::logic_error("ce_test: duplicate Delaunay points");
 
   Soup out;
   out.points.reserve(xy.size());
   out.params = xy;
-  for (const Eigen::Vector2d& p : xy) out.points.emplace_back(p.x(), p.y(), g.f(p.x(), p.y()));
+  for (const Eigen::Vector2d& p : xy)
+    out.points.emplace_back(p.x(), p.y(), g.f(p.x(), p.y()));
   out.faces.reserve(dt.number_of_faces());
   for (auto fh : dt.finite_face_handles()) // CGAL's finite faces are counter-clockwise
     out.faces.push_back({fh->vertex(0)->info(), fh->vertex(1)->info(), fh->vertex(2)->info()});
@@ -544,26 +548,29 @@ inline Soup delaunay_graph_soup(const Graph_function& g, std::size_t n_points, d
 /// Exact curvature: `sphere_curvature(radius, p)`.
 inline Soup sphere_soup(double radius, unsigned subdivisions)
 {
-  if (!(radius > 0.0)) throw std::invalid_argument("ce_test: sphere_soup needs radius > 0");
+  if (!(radius > 0.0))
+    throw std::invalid_argument("ce_test: sphere_soup needs radius > 0");
   const double t = 0.5 * (1.0 + std::sqrt(5.0));
-  std::vector<Eigen::Vector3d> pts = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
-                                      {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
-                                      {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-  for (auto& p : pts) p.normalize();
-  std::vector<std::array<std::size_t, 3>> faces = {
-      {0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-      {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
-      {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+  std::vector<Eigen::Vector3d> pts = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                                      {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
+  for (auto& p : pts)
+    p.normalize();
+  std::vector<std::array<std::size_t, 3>> faces = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                                   {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                                   {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                                   {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
   for (auto& f : faces) { // make every face outward, whatever the table's orientation
     const Eigen::Vector3d nrm = (pts[f[1]] - pts[f[0]]).cross(pts[f[2]] - pts[f[0]]);
-    if (nrm.dot(pts[f[0]] + pts[f[1]] + pts[f[2]]) < 0.0) std::swap(f[1], f[2]);
+    if (nrm.dot(pts[f[0]] + pts[f[1]] + pts[f[2]]) < 0.0)
+      std::swap(f[1], f[2]);
   }
   for (unsigned s = 0; s < subdivisions; ++s) {
     std::map<std::pair<std::size_t, std::size_t>, std::size_t> mid;
     auto midpoint = [&](std::size_t a, std::size_t b) {
       const auto key = std::make_pair(std::min(a, b), std::max(a, b));
       const auto it = mid.find(key);
-      if (it != mid.end()) return it->second;
+      if (it != mid.end())
+        return it->second;
       pts.push_back((pts[a] + pts[b]).normalized());
       mid.emplace(key, pts.size() - 1);
       return pts.size() - 1;
@@ -600,8 +607,10 @@ inline Soup sphere_soup(double radius, unsigned subdivisions)
 inline Soup ellipsoid_soup(double a, double b, double c, unsigned subdivisions, double jitter = 0.0,
                            std::uint32_t seed = 1)
 {
-  if (!(a > 0.0 && b > 0.0 && c > 0.0)) throw std::invalid_argument("ce_test: ellipsoid_soup needs a, b, c > 0");
-  if (!(jitter >= 0.0 && jitter < 0.25)) throw std::invalid_argument("ce_test: ellipsoid jitter must be in [0, 0.25)");
+  if (!(a > 0.0 && b > 0.0 && c > 0.0))
+    throw std::invalid_argument("ce_test: ellipsoid_soup needs a, b, c > 0");
+  if (!(jitter >= 0.0 && jitter < 0.25))
+    throw std::invalid_argument("ce_test: ellipsoid jitter must be in [0, 0.25)");
   Soup s = sphere_soup(1.0, subdivisions);
   if (jitter > 0.0) {
     std::vector<double> shortest(s.points.size(), std::numeric_limits<double>::infinity());
@@ -638,9 +647,12 @@ inline Soup ellipsoid_soup(double a, double b, double c, unsigned subdivisions, 
 inline Soup torus_soup(double R, double r, std::size_t n_u, std::size_t n_v, double jitter = 0.0,
                        std::uint32_t seed = 1)
 {
-  if (!(R > r && r > 0.0)) throw std::invalid_argument("ce_test: torus_soup needs R > r > 0");
-  if (n_u < 3 || n_v < 3) throw std::invalid_argument("ce_test: torus_soup needs n_u, n_v >= 3");
-  if (!(jitter >= 0.0 && jitter < 0.25)) throw std::invalid_argument("ce_test: torus jitter must be in [0, 0.25)");
+  if (!(R > r && r > 0.0))
+    throw std::invalid_argument("ce_test: torus_soup needs R > r > 0");
+  if (n_u < 3 || n_v < 3)
+    throw std::invalid_argument("ce_test: torus_soup needs n_u, n_v >= 3");
+  if (!(jitter >= 0.0 && jitter < 0.25))
+    throw std::invalid_argument("ce_test: torus jitter must be in [0, 0.25)");
   std::mt19937 gen(seed);
   const double du = 2.0 * pi / static_cast<double>(n_u), dv = 2.0 * pi / static_cast<double>(n_v);
   Soup s;
@@ -668,7 +680,8 @@ inline std::vector<Exact_curvature> graph_curvatures(const Graph_function& g, co
 {
   std::vector<Exact_curvature> out;
   out.reserve(s.params.size());
-  for (const auto& p : s.params) out.push_back(graph_curvature(g, p.x(), p.y()));
+  for (const auto& p : s.params)
+    out.push_back(graph_curvature(g, p.x(), p.y()));
   return out;
 }
 
@@ -677,7 +690,8 @@ inline std::vector<Exact_curvature> torus_curvatures(double R, double r, const S
 {
   std::vector<Exact_curvature> out;
   out.reserve(s.params.size());
-  for (const auto& p : s.params) out.push_back(torus_curvature(R, r, p.x(), p.y()));
+  for (const auto& p : s.params)
+    out.push_back(torus_curvature(R, r, p.x(), p.y()));
   return out;
 }
 
@@ -686,7 +700,8 @@ inline std::vector<Exact_curvature> sphere_curvatures(double radius, const Soup&
 {
   std::vector<Exact_curvature> out;
   out.reserve(s.points.size());
-  for (const auto& p : s.points) out.push_back(sphere_curvature(radius, p));
+  for (const auto& p : s.points)
+    out.push_back(sphere_curvature(radius, p));
   return out;
 }
 
@@ -695,7 +710,8 @@ inline std::vector<Exact_curvature> ellipsoid_curvatures(double a, double b, dou
 {
   std::vector<Exact_curvature> out;
   out.reserve(s.points.size());
-  for (const auto& p : s.points) out.push_back(ellipsoid_curvature(a, b, c, p));
+  for (const auto& p : s.points)
+    out.push_back(ellipsoid_curvature(a, b, c, p));
   return out;
 }
 
@@ -713,7 +729,8 @@ inline double signed_area_xy(const Soup& s, std::size_t f)
 inline double signed_volume(const Soup& s)
 {
   double v = 0.0;
-  for (const auto& t : s.faces) v += s.points[t[0]].dot(s.points[t[1]].cross(s.points[t[2]]));
+  for (const auto& t : s.faces)
+    v += s.points[t[0]].dot(s.points[t[1]].cross(s.points[t[2]]));
   return v / 6.0;
 }
 
@@ -725,7 +742,8 @@ inline Soup pipe_soup(double r_inner, double r_outer, double length, std::size_t
 {
   if (!(r_outer > r_inner && r_inner > 0.0 && length > 0.0))
     throw std::invalid_argument("ce_test: pipe_soup needs r_outer > r_inner > 0 and length > 0");
-  if (n < 3) throw std::invalid_argument("ce_test: pipe_soup needs n >= 3");
+  if (n < 3)
+    throw std::invalid_argument("ce_test: pipe_soup needs n >= 3");
   const double radius[4] = {r_inner, r_outer, r_outer, r_inner};
   const double y[4] = {-0.5 * length, -0.5 * length, 0.5 * length, 0.5 * length};
   Soup s;
@@ -740,7 +758,8 @@ inline Soup pipe_soup(double r_inner, double r_outer, double length, std::size_t
       internal::add_grid_quads(s.faces, i + n * j, i1 + n * j, i1 + n * j1, i + n * j1, Diagonal::anti);
     }
   if (signed_volume(s) < 0.0)
-    for (auto& f : s.faces) std::swap(f[1], f[2]);
+    for (auto& f : s.faces)
+      std::swap(f[1], f[2]);
   return s;
 }
 
@@ -754,7 +773,8 @@ inline double mean_edge_length(const Soup& s)
       e.emplace(std::make_pair(std::min(a, b), std::max(a, b)), (s.points[a] - s.points[b]).norm());
     }
   double sum = 0.0;
-  for (const auto& kv : e) sum += kv.second;
+  for (const auto& kv : e)
+    sum += kv.second;
   return e.empty() ? 0.0 : sum / static_cast<double>(e.size());
 }
 
@@ -773,7 +793,8 @@ Mesh to_mesh(const Soup& soup)
   using Point = typename boost::property_traits<VPM>::value_type;
   std::vector<Point> points;
   points.reserve(soup.points.size());
-  for (const auto& p : soup.points) points.push_back(Point(p.x(), p.y(), p.z()));
+  for (const auto& p : soup.points)
+    points.push_back(Point(p.x(), p.y(), p.z()));
   if (!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup.faces))
     throw std::runtime_error("ce_test::to_mesh: the soup is not a valid polygon mesh");
   Mesh mesh;
@@ -791,7 +812,8 @@ std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> soup_order_ve
 {
   std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> out;
   out.reserve(static_cast<std::size_t>(num_vertices(mesh)));
-  for (auto v : vertices(mesh)) out.push_back(v);
+  for (auto v : vertices(mesh))
+    out.push_back(v);
   return out;
 }
 

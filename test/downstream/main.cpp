@@ -28,7 +28,8 @@ int main()
   CGAL::make_icosahedron(mesh, Point(0, 0, 0), 2.0);
   auto mean = mesh.add_property_map<Mesh::Vertex_index, double>("v:H").first;
   auto status = mesh.add_property_map<Mesh::Vertex_index, CE::Estimation_status>("v:status").first;
-  CE::paraboloid_fitting_curvatures(mesh, CE::parameters::vertex_mean_curvature_map(mean).vertex_estimation_status_map(status));
+  CE::paraboloid_fitting_curvatures(
+    mesh, CE::parameters::vertex_mean_curvature_map(mean).vertex_estimation_status_map(status));
 
   // Every vertex of a convex closed surface with outward faces has H > 0.
   for (Mesh::Vertex_index v : vertices(mesh))

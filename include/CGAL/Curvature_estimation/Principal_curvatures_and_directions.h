@@ -43,13 +43,18 @@ struct Principal_curvatures_and_directions
   Vector_3 max_direction;
 
   Principal_curvatures_and_directions()
-    : min_curvature(0), max_curvature(0), min_direction(0, 0, 0), max_direction(0, 0, 0)
+      : min_curvature(0)
+      , max_curvature(0)
+      , min_direction(0, 0, 0)
+      , max_direction(0, 0, 0)
   {}
 
-  Principal_curvatures_and_directions(FT min_curvature, FT max_curvature,
-                                      const Vector_3& min_direction, const Vector_3& max_direction)
-    : min_curvature(min_curvature), max_curvature(max_curvature),
-      min_direction(min_direction), max_direction(max_direction)
+  Principal_curvatures_and_directions(FT min_curvature, FT max_curvature, const Vector_3& min_direction,
+                                      const Vector_3& max_direction)
+      : min_curvature(min_curvature)
+      , max_curvature(max_curvature)
+      , min_direction(min_direction)
+      , max_direction(max_direction)
   {}
 };
 #endif
@@ -73,22 +78,22 @@ enum class Estimation_status : unsigned char
 inline const char* to_string(Estimation_status status)
 {
   switch (status) {
-    case Estimation_status::ok: return "ok";
-    case Estimation_status::widened: return "widened";
-    case Estimation_status::not_estimable: return "not_estimable";
-    case Estimation_status::fallback: return "fallback";
+    case Estimation_status::ok:
+      return "ok";
+    case Estimation_status::widened:
+      return "widened";
+    case Estimation_status::not_estimable:
+      return "not_estimable";
+    case Estimation_status::fallback:
+      return "fallback";
   }
   return "unknown";
 }
 
-inline std::ostream& operator<<(std::ostream& os, Estimation_status status)
-{
-  return os << to_string(status);
-}
+inline std::ostream& operator<<(std::ostream& os, Estimation_status status) { return os << to_string(status); }
 
 } // namespace Curvature_estimation
 } // namespace CGAL
-
 
 namespace CGAL {
 namespace Curvature_estimation {

@@ -82,19 +82,16 @@ struct Tetrahedral_complex_traits<Indexed_tetrahedral_mesh<Point>>
       f(cell[0], cell[1], cell[2], cell[3]);
     }
   }
-  static Default_point_map default_point_map(const Complex& c)
-  {
-    return CGAL::make_property_map(c.points.data());
-  }
+  static Default_point_map default_point_map(const Complex& c) { return CGAL::make_property_map(c.points.data()); }
 };
 
 // Any CGAL 3D triangulation (Triangulation_3, Delaunay_triangulation_3,
 // Regular_triangulation_3, the triangulation of a Mesh_3 C3T3): recognised by its
 // finite-cell and finite-vertex iterators.
 template <typename Tr>
-struct Tetrahedral_complex_traits<Tr, std::void_t<decltype(std::declval<const Tr&>().finite_cells_begin()),
-                                                  decltype(std::declval<const Tr&>().finite_vertices_begin()),
-                                                  typename Tr::Vertex_handle>>
+struct Tetrahedral_complex_traits<
+  Tr, std::void_t<decltype(std::declval<const Tr&>().finite_cells_begin()),
+                  decltype(std::declval<const Tr&>().finite_vertices_begin()), typename Tr::Vertex_handle>>
 {
   using Complex = Tr;
   using vertex_descriptor = typename Complex::Vertex_handle;

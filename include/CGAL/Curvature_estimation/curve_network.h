@@ -5,8 +5,6 @@
 #define CGAL_CURVATURE_ESTIMATION_CURVE_NETWORK_H
 
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
-#include <CGAL/Curvature_estimation/paraboloid_fitting.h>
-#include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/Vertex_normal_method.h>
 #include <CGAL/Curvature_estimation/internal/curve_curvature.h>
 #include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
@@ -14,6 +12,8 @@
 #include <CGAL/Curvature_estimation/internal/face_graph_platelet.h>
 #include <CGAL/Curvature_estimation/internal/local_coordinates.h>
 #include <CGAL/Curvature_estimation/internal/meusnier_euler.h>
+#include <CGAL/Curvature_estimation/paraboloid_fitting.h>
+#include <CGAL/Curvature_estimation/parameters.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -108,10 +108,13 @@ public:
   using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<FaceGraph>::halfedge_descriptor;
 
-  Curve_network_estimator(const FaceGraph& g, VertexPointMap vpm, Curve_model model, int order,
-                          double max_irregularity)
-    : g_(&g), vpm_(vpm), model_(model), order_(order), max_irregularity_(max_irregularity),
-      fallback_(g, vpm, Fit_parameters{Platelet_fit_settings(), Vertex_normal_method::quadric_fit})
+  Curve_network_estimator(const FaceGraph& g, VertexPointMap vpm, Curve_model model, int order, double max_irregularity)
+      : g_(&g)
+      , vpm_(vpm)
+      , model_(model)
+      , order_(order)
+      , max_irregularity_(max_irregularity)
+      , fallback_(g, vpm, Fit_parameters{Platelet_fit_settings(), Vertex_normal_method::quadric_fit})
   {}
 
   // The estimate at `v`; `given_normal` is the user's normal (any length), or
@@ -414,7 +417,8 @@ private:
 /// \ceConcurrencyTag
 /// \tparam FaceGraph a model of `FaceGraph` (the curves need triangles; other
 ///         faces are accepted and only change which vertices neighbor each other).
-/// \tparam NamedParameters a sequence of named parameters, built with the functions of `CGAL::Curvature_estimation::parameters`
+/// \tparam NamedParameters a sequence of named parameters, built with the functions of
+/// `CGAL::Curvature_estimation::parameters`
 ///
 /// \param g the mesh
 /// \param np an optional sequence of named parameters among the ones listed below
@@ -453,11 +457,9 @@ private:
 ///         greater than 1 with `Curve_model::circle`, if `max_curve_irregularity` is
 ///         negative or NaN, or if `ball_radius` is given
 ///         (neighborhoods are set in rings).
-template <typename ConcurrencyTag = CGAL::Sequential_tag,
-          typename FaceGraph,
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename FaceGraph,
           typename NamedParameters = parameters::Default_named_parameters>
-void curve_network_curvatures(const FaceGraph& g,
-                              const NamedParameters& np = parameters::default_values())
+void curve_network_curvatures(const FaceGraph& g, const NamedParameters& np = parameters::default_values())
 {
   internal::reject_ball_radius<NamedParameters>("curve_network_curvatures");
   const Curve_model model = internal::parameter_or(np, internal_np::curve_model, Curve_model::bezier);
@@ -468,14 +470,14 @@ void curve_network_curvatures(const FaceGraph& g,
   if (order > 1 && model != Curve_model::bezier)
     throw std::invalid_argument(
       "curve_network_curvatures: extrapolation_order greater than 1 requires Curve_model::bezier");
-  const double max_irregularity = internal::parameter_or(np, internal_np::max_curve_irregularity,
-                                                         internal::default_max_curve_irregularity);
+  const double max_irregularity =
+    internal::parameter_or(np, internal_np::max_curve_irregularity, internal::default_max_curve_irregularity);
   if (!(max_irregularity >= 0))
     throw std::invalid_argument("curve_network_curvatures: max_curve_irregularity must be at least 0");
 
   internal::estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
     return internal::Curve_network_estimator<FaceGraph, std::decay_t<decltype(vpm)>>(g, vpm, model, order,
-                                                                                       max_irregularity);
+                                                                                     max_irregularity);
   });
 }
 

@@ -5,12 +5,12 @@
 
 #include <CGAL/Curvature_estimation/Neighbor_weighting.h>
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
-#include <CGAL/Curvature_estimation/parameters.h>
-#include <CGAL/Curvature_estimation/vertex_normals.h>
 #include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
 #include <CGAL/Curvature_estimation/internal/face_graph_platelet.h>
 #include <CGAL/Curvature_estimation/internal/gauss_map_differential.h>
 #include <CGAL/Curvature_estimation/internal/shape_matrix_estimate.h>
+#include <CGAL/Curvature_estimation/parameters.h>
+#include <CGAL/Curvature_estimation/vertex_normals.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
@@ -52,9 +52,8 @@ Gauss_map_differential_method gauss_map_differential_method(const NamedParameter
 // normalised, else estimated by `fit`'s method. Computed before the differential,
 // which reads each vertex's normal at all its neighbors.
 template <typename ConcurrencyTag, typename FaceGraph, typename VertexPointMap, typename NamedParameters>
-std::shared_ptr<const Vertex_normal_table<FaceGraph>> gauss_map_normals(const FaceGraph& g, const VertexPointMap& vpm,
-                                                                        const NamedParameters& np,
-                                                                        const Fit_parameters& fit)
+std::shared_ptr<const Vertex_normal_table<FaceGraph>>
+gauss_map_normals(const FaceGraph& g, const VertexPointMap& vpm, const NamedParameters& np, const Fit_parameters& fit)
 {
   using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
   const Eigen::Vector3d no_normal = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
@@ -70,9 +69,9 @@ std::shared_ptr<const Vertex_normal_table<FaceGraph>> gauss_map_normals(const Fa
     (void)np;
     const Vertex_normal_estimator<FaceGraph, VertexPointMap> estimator{
       Platelet_fitter<FaceGraph, VertexPointMap>(g, vpm, fit.settings), fit.normal_method, true};
-    estimate_at_vertices<ConcurrencyTag, false>(vertices(g), estimator, [&](vertex_descriptor v, const Eigen::Vector3d& n) {
-      normals->set(v, n.squaredNorm() > 0 ? n : no_normal);
-    });
+    estimate_at_vertices<ConcurrencyTag, false>(
+      vertices(g), estimator,
+      [&](vertex_descriptor v, const Eigen::Vector3d& n) { normals->set(v, n.squaredNorm() > 0 ? n : no_normal); });
   }
   return normals;
 }
@@ -168,7 +167,8 @@ std::shared_ptr<const Vertex_normal_table<FaceGraph>> gauss_map_normals(const Fa
 ///
 /// \ceConcurrencyTag
 /// \tparam FaceGraph a model of `FaceGraph` (faces may be any polygons).
-/// \tparam NamedParameters a sequence of named parameters, built with the functions of `CGAL::Curvature_estimation::parameters`
+/// \tparam NamedParameters a sequence of named parameters, built with the functions of
+/// `CGAL::Curvature_estimation::parameters`
 ///
 /// \param g the mesh
 /// \param np an optional sequence of named parameters among the ones listed below
@@ -197,8 +197,7 @@ std::shared_ptr<const Vertex_normal_table<FaceGraph>> gauss_map_normals(const Fa
 ///
 /// \throws std::invalid_argument if a parameter is out of its range, or if `ball_radius`
 ///         is given with `neighbor_weighting`.
-template <typename ConcurrencyTag = CGAL::Sequential_tag,
-          typename FaceGraph,
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename FaceGraph,
           typename NamedParameters = parameters::Default_named_parameters>
 void gauss_map_curvatures(const FaceGraph& g, const NamedParameters& np = parameters::default_values())
 {

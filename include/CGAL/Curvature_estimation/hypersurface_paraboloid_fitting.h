@@ -10,10 +10,10 @@
 
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/Tetrahedral_complex_traits.h>
-#include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
 #include <CGAL/Curvature_estimation/internal/fit_parameters.h>
 #include <CGAL/Curvature_estimation/internal/tetrahedral_platelet_fit.h>
+#include <CGAL/Curvature_estimation/parameters.h>
 
 #include <CGAL/tags.h>
 
@@ -138,8 +138,9 @@ void put_hypersurface_estimate(const NamedParameters& np, const Vertex& v, const
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{a property map associating points of R^4 to the vertices}
 ///     \cgalParamType{a model of `ReadablePropertyMap` with the complex's vertex descriptor as key type and
-///                    as value type `Eigen::Vector4d`, `std::array<double, 4>` or a CGAL `Epick_d<Dimension_tag<4>>::Point_d`;
-///                    `make_graph_point_map()` builds one from a 3D point map and a scalar map}
+///                    as value type `Eigen::Vector4d`, `std::array<double, 4>` or a CGAL
+///                    `Epick_d<Dimension_tag<4>>::Point_d`; `make_graph_point_map()` builds one from a 3D point map and
+///                    a scalar map}
 ///     \cgalParamDefault{the complex's points (`points[i]` of an `Indexed_tetrahedral_mesh`; for a
 ///                       `Triangulation_3`, whose points are in R^3, the map must be given)}
 ///   \cgalParamNEnd
@@ -226,8 +227,7 @@ void put_hypersurface_estimate(const NamedParameters& np, const Vertex& v, const
 ///
 /// \throws std::invalid_argument if a parameter is out of its range, a cell index is out of
 ///         range, or the points do not have 4 coordinates.
-template <typename ConcurrencyTag = CGAL::Sequential_tag,
-          typename TetrahedralComplex,
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TetrahedralComplex,
           typename NamedParameters = parameters::Default_named_parameters>
 void hypersurface_paraboloid_fitting_curvatures(const TetrahedralComplex& complex,
                                                 const NamedParameters& np = parameters::default_values())
@@ -239,7 +239,8 @@ void hypersurface_paraboloid_fitting_curvatures(const TetrahedralComplex& comple
 
   const internal::Fit_parameters fit =
     internal::curvature_fit_parameters(np, "hypersurface_paraboloid_fitting_curvatures", 3, true);
-  if (fit.normal_method != Vertex_normal_method::quadric_fit && fit.normal_method != Vertex_normal_method::area_weighted)
+  if (fit.normal_method != Vertex_normal_method::quadric_fit &&
+      fit.normal_method != Vertex_normal_method::area_weighted)
     throw std::invalid_argument("hypersurface_paraboloid_fitting_curvatures: vertex_normal_method must be "
                                 "quadric_fit or area_weighted");
   if constexpr (!internal::wants_curvature_output<NamedParameters>())

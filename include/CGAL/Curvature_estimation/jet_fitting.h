@@ -5,12 +5,12 @@
 #define CGAL_CURVATURE_ESTIMATION_JET_FITTING_H
 
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
-#include <CGAL/Curvature_estimation/paraboloid_fitting.h>
-#include <CGAL/Curvature_estimation/parameters.h>
-#include <CGAL/Curvature_estimation/internal/face_average_normal.h>
 #include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
+#include <CGAL/Curvature_estimation/internal/face_average_normal.h>
 #include <CGAL/Curvature_estimation/internal/neighborhood.h>
 #include <CGAL/Curvature_estimation/internal/surface_estimate.h>
+#include <CGAL/Curvature_estimation/paraboloid_fitting.h>
+#include <CGAL/Curvature_estimation/parameters.h>
 
 #include <CGAL/Monge_via_jet_fitting.h>
 #include <CGAL/Simple_cartesian.h>
@@ -45,9 +45,15 @@ public:
 
   Jet_fitter(const FaceGraph& g, VertexPointMap vpm, int jet_degree, int monge_degree, int rings, int max_rings,
              double max_condition, double ball_radius)
-    : g_(&g), vpm_(vpm), jet_degree_(jet_degree), monge_degree_(monge_degree), rings_(rings), max_rings_(max_rings),
-      max_condition_(max_condition), ball_radius_(ball_radius),
-      fallback_(g, vpm, Fit_parameters{Platelet_fit_settings(), Vertex_normal_method::quadric_fit})
+      : g_(&g)
+      , vpm_(vpm)
+      , jet_degree_(jet_degree)
+      , monge_degree_(monge_degree)
+      , rings_(rings)
+      , max_rings_(max_rings)
+      , max_condition_(max_condition)
+      , ball_radius_(ball_radius)
+      , fallback_(g, vpm, Fit_parameters{Platelet_fit_settings(), Vertex_normal_method::quadric_fit})
   {}
 
   // CGAL's fit normal.
@@ -70,7 +76,6 @@ public:
   }
 
 private:
-
   // The fit over the k-ring (the vertex first, as CGAL requires), from `rings_`
   // rings on, widened until there are enough points for the jet's
   // (d+1)(d+2)/2 coefficients (a precondition CGAL checks only in debug builds)
@@ -88,7 +93,9 @@ private:
     collector_.start(v, *g_);
     Surface_estimate e;
     if (ball_radius_ > 0) {
-      const auto squared_distance = [&](vertex_descriptor w) { return (point_in_double(vpm_, w) - center).squaredNorm(); };
+      const auto squared_distance = [&](vertex_descriptor w) {
+        return (point_in_double(vpm_, w) - center).squaredNorm();
+      };
       const int growths = fit_in_growing_ball(
         ball_radius_, unknowns,
         [&](double radius) { return collector_.grow_ball(*g_, radius * radius, squared_distance); },
@@ -145,9 +152,10 @@ private:
     // normal: with the outward normal a convex surface has k < 0. This
     // package's convention is the opposite, so max and min swap.
     const auto to_eigen = [](const Local_kernel::Vector_3& d) { return Eigen::Vector3d(d.x(), d.y(), d.z()); };
-    e = Surface_estimate::from_principal(Estimation_status::ok, -form.principal_curvatures(1),
-                                         -form.principal_curvatures(0), to_eigen(form.minimal_principal_direction()),
-                                         to_eigen(form.maximal_principal_direction()), to_eigen(form.normal_direction()));
+    e =
+      Surface_estimate::from_principal(Estimation_status::ok, -form.principal_curvatures(1),
+                                       -form.principal_curvatures(0), to_eigen(form.minimal_principal_direction()),
+                                       to_eigen(form.maximal_principal_direction()), to_eigen(form.normal_direction()));
     return std::isfinite(e.max_curvature) && std::isfinite(e.min_curvature);
   }
 
@@ -155,7 +163,7 @@ private:
   VertexPointMap vpm_;
   int jet_degree_, monge_degree_, rings_, max_rings_;
   double max_condition_;
-  double ball_radius_;  // > 0: the ball's, instead of the rings
+  double ball_radius_; // > 0: the ball's, instead of the rings
   Ring_collector<FaceGraph> collector_;
   std::vector<Local_kernel::Point_3> points_;
   Paraboloid_estimator<FaceGraph, VertexPointMap> fallback_;
@@ -256,15 +264,14 @@ private:
 ///     \cgalParamDefault{not computed}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_estimation_status_map}
-///     \cgalParamDescription{output: `ok` on the starting rings, `widened` beyond, `fallback` (the paraboloid fit), `not_estimable`}
-///     \cgalParamType{a model of `WritablePropertyMap` with `Estimation_status` as value type}
+///     \cgalParamDescription{output: `ok` on the starting rings, `widened` beyond, `fallback` (the paraboloid fit),
+///     `not_estimable`} \cgalParamType{a model of `WritablePropertyMap` with `Estimation_status` as value type}
 ///     \cgalParamDefault{not computed}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \throws std::invalid_argument if a parameter is out of its range.
-template <typename ConcurrencyTag = CGAL::Sequential_tag,
-          typename FaceGraph,
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename FaceGraph,
           typename NamedParameters = parameters::Default_named_parameters>
 void jet_fitting_curvatures(const FaceGraph& g, const NamedParameters& np = parameters::default_values())
 {
@@ -284,7 +291,7 @@ void jet_fitting_curvatures(const FaceGraph& g, const NamedParameters& np = para
 
   internal::estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
     return internal::Jet_fitter<FaceGraph, std::decay_t<decltype(vpm)>>(g, vpm, jet_degree, monge_degree, rings,
-                                                                         max_rings, max_condition, ball_radius);
+                                                                        max_rings, max_condition, ball_radius);
   });
 }
 

@@ -4,8 +4,8 @@
 #ifndef CGAL_CURVATURE_ESTIMATION_MEAN_EDGE_LENGTH_H
 #define CGAL_CURVATURE_ESTIMATION_MEAN_EDGE_LENGTH_H
 
-#include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/internal/local_coordinates.h>
+#include <CGAL/Curvature_estimation/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -43,8 +43,8 @@ double mean_edge_length(const FaceGraph& g, const NamedParameters& np = paramete
   std::size_t count = 0;
   for (auto e : edges(g)) {
     const auto h = halfedge(e, g);
-    const double length =
-      internal::safe_norm(Eigen::Vector3d(internal::point_in_double(vpm, source(h, g)) - internal::point_in_double(vpm, target(h, g))));
+    const double length = internal::safe_norm(
+      Eigen::Vector3d(internal::point_in_double(vpm, source(h, g)) - internal::point_in_double(vpm, target(h, g))));
     if (std::isfinite(length)) {
       sum += length;
       ++count;

@@ -4,12 +4,12 @@
 #define CGAL_CURVATURE_ESTIMATION_PARABOLOID_FITTING_H
 
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
-#include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/Vertex_normal_method.h>
-#include <CGAL/Curvature_estimation/vertex_normals.h>
 #include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
 #include <CGAL/Curvature_estimation/internal/face_graph_platelet.h>
 #include <CGAL/Curvature_estimation/internal/gauss_map_differential.h>
+#include <CGAL/Curvature_estimation/parameters.h>
+#include <CGAL/Curvature_estimation/vertex_normals.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
@@ -62,9 +62,12 @@ class Paraboloid_estimator
 {
 public:
   Paraboloid_estimator(const FaceGraph& g, VertexPointMap vpm, const Fit_parameters& fit)
-    : fitter_(g, vpm, fit.settings), method_(fit.normal_method),
-      gauss_map_(g, vpm, Vertex_normal_estimator<FaceGraph, VertexPointMap>{
-                           Platelet_fitter<FaceGraph, VertexPointMap>(g, vpm, fit.settings, nullptr), fit.normal_method, true})
+      : fitter_(g, vpm, fit.settings)
+      , method_(fit.normal_method)
+      , gauss_map_(
+          g, vpm,
+          Vertex_normal_estimator<FaceGraph, VertexPointMap>{
+            Platelet_fitter<FaceGraph, VertexPointMap>(g, vpm, fit.settings, nullptr), fit.normal_method, true})
   {}
 
   Surface_estimate estimate(typename boost::graph_traits<FaceGraph>::vertex_descriptor v, const Eigen::Vector3d* given)
@@ -172,16 +175,14 @@ private:
 /// jet fitting does (over 3 lopsided, curved rings a frame that leaves the far samples
 /// steep spoils a quartic graph, even the exact normal's), where the fit is
 /// well-conditioned in it. The fitted gradient corrects the frame's normal to the fit's
-/// order, and the curvatures are those of the fitted graph at the vertex. On irregular meshes (Delaunay meshes of random points, marching-tetrahedra
-/// meshes, jittered tori) these converge at orders about 2 and 3 where degree 2 is of
-/// first order, at about 2 and 4 times the cost (see the benchmark report); degree 4 is
-/// about as accurate as CGAL's jet fitting of degree 4 on 3 rings. Widening,
-/// test (b) and the fallback are as for degree 2, with condition thresholds of 100 and
-/// 1e5 times `max_condition_number`, up to `max_neighborhood_rings` rings or one ring
-/// more than the degree's. The degree-3 fit is solved again less the curvature's quartic
-/// term, as above. The normal these fits read their curvatures in (the frame's normal
-/// corrected by the fitted gradient, of order 3 and 4) is what `estimate_vertex_normals()`
-/// writes with the same `fit_degree`. These fits, and those over a ball or over more than
+/// order, and the curvatures are those of the fitted graph at the vertex. On irregular meshes (Delaunay meshes of
+/// random points, marching-tetrahedra meshes, jittered tori) these converge at orders about 2 and 3 where degree 2 is
+/// of first order, at about 2 and 4 times the cost (see the benchmark report); degree 4 is about as accurate as CGAL's
+/// jet fitting of degree 4 on 3 rings. Widening, test (b) and the fallback are as for degree 2, with condition
+/// thresholds of 100 and 1e5 times `max_condition_number`, up to `max_neighborhood_rings` rings or one ring more than
+/// the degree's. The degree-3 fit is solved again less the curvature's quartic term, as above. The normal these fits
+/// read their curvatures in (the frame's normal corrected by the fitted gradient, of order 3 and 4) is what
+/// `estimate_vertex_normals()` writes with the same `fit_degree`. These fits, and those over a ball or over more than
 /// one starting ring, read the rings from a table of every vertex's neighbors, built once
 /// per call where vertex descriptors are indices (`Surface_mesh`): 4 bytes per vertex and
 /// 4 per halfedge of temporary memory (28 bytes per vertex of valence 6).
@@ -239,7 +240,8 @@ private:
 ///
 /// \ceConcurrencyTag
 /// \tparam FaceGraph a model of `FaceGraph` (faces may be any polygons).
-/// \tparam NamedParameters a sequence of named parameters, built with the functions of `CGAL::Curvature_estimation::parameters`
+/// \tparam NamedParameters a sequence of named parameters, built with the functions of
+/// `CGAL::Curvature_estimation::parameters`
 ///
 /// \param g the mesh
 /// \param np an optional sequence of named parameters among the ones listed below
@@ -304,15 +306,14 @@ private:
 ///     \cgalParamType{`double`, greater than 1}
 ///     \cgalParamDefault{`1e3`}
 ///   \cgalParamNEnd
-///   \ceSurfaceOutputParameters{K = k1 k2, `ok`\, `widened` (see Widening above)\, `fallback` (see Fallback above) or `not_estimable`}
+///   \ceSurfaceOutputParameters{K = k1 k2, `ok`\, `widened` (see Widening above)\, `fallback` (see Fallback above) or
+///   `not_estimable`}
 /// \cgalNamedParamsEnd
 ///
 /// \throws std::invalid_argument if a parameter is out of its range.
-template <typename ConcurrencyTag = CGAL::Sequential_tag,
-          typename FaceGraph,
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename FaceGraph,
           typename NamedParameters = parameters::Default_named_parameters>
-void paraboloid_fitting_curvatures(const FaceGraph& g,
-                                   const NamedParameters& np = parameters::default_values())
+void paraboloid_fitting_curvatures(const FaceGraph& g, const NamedParameters& np = parameters::default_values())
 {
   const internal::Fit_parameters fit = internal::curvature_fit_parameters(np, "paraboloid_fitting_curvatures", 4, true);
   internal::estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {

@@ -27,50 +27,53 @@
 // The parameters that CGAL 6 defines too, with the same meaning (CGAL 6's
 // interpolated corrected curvatures): on CGAL 6 they are CGAL's own tags, so that
 // one chain serves CGAL's estimator and ours; on CGAL 5 this package declares them.
-#define CGAL_CE_PARAMETERS_SHARED_WITH_CGAL_6(X)                                      \
-  X(vertex_mean_curvature_map_t, vertex_mean_curvature_map)                           \
-  X(vertex_Gaussian_curvature_map_t, vertex_Gaussian_curvature_map)                   \
-  X(vertex_principal_curvatures_and_directions_map_t,                                 \
-    vertex_principal_curvatures_and_directions_map)                                   \
+#define CGAL_CE_PARAMETERS_SHARED_WITH_CGAL_6(X)                                                                       \
+  X(vertex_mean_curvature_map_t, vertex_mean_curvature_map)                                                            \
+  X(vertex_Gaussian_curvature_map_t, vertex_Gaussian_curvature_map)                                                    \
+  X(vertex_principal_curvatures_and_directions_map_t, vertex_principal_curvatures_and_directions_map)                  \
   X(ball_radius_t, ball_radius)
 // The parameters of this package alone:
-#define CGAL_CE_OWN_PARAMETERS(X)                                                     \
-  X(vertex_estimation_status_map_t, vertex_estimation_status_map)                     \
-  X(vertex_normal_method_t, vertex_normal_method)                                     \
-  X(neighborhood_rings_t, neighborhood_rings)                                         \
-  X(boundary_neighborhood_rings_t, boundary_neighborhood_rings)                       \
-  X(max_neighborhood_rings_t, max_neighborhood_rings)                                 \
-  X(max_condition_number_t, max_condition_number)                                     \
-  X(neighbor_weighting_t, neighbor_weighting)                                         \
-  X(curve_model_t, curve_model)                                                       \
-  X(extrapolation_order_t, extrapolation_order)                                       \
-  X(max_curve_irregularity_t, max_curve_irregularity)                                 \
-  X(fit_degree_t, fit_degree)                                                         \
-  X(jet_degree_t, jet_degree)                                                         \
+#define CGAL_CE_OWN_PARAMETERS(X)                                                                                      \
+  X(vertex_estimation_status_map_t, vertex_estimation_status_map)                                                      \
+  X(vertex_normal_method_t, vertex_normal_method)                                                                      \
+  X(neighborhood_rings_t, neighborhood_rings)                                                                          \
+  X(boundary_neighborhood_rings_t, boundary_neighborhood_rings)                                                        \
+  X(max_neighborhood_rings_t, max_neighborhood_rings)                                                                  \
+  X(max_condition_number_t, max_condition_number)                                                                      \
+  X(neighbor_weighting_t, neighbor_weighting)                                                                          \
+  X(curve_model_t, curve_model)                                                                                        \
+  X(extrapolation_order_t, extrapolation_order)                                                                        \
+  X(max_curve_irregularity_t, max_curve_irregularity)                                                                  \
+  X(fit_degree_t, fit_degree)                                                                                          \
+  X(jet_degree_t, jet_degree)                                                                                          \
   X(monge_degree_t, monge_degree)
-#define CGAL_CE_PACKAGE_PARAMETERS(X)        \
-  CGAL_CE_PARAMETERS_SHARED_WITH_CGAL_6(X)   \
+#define CGAL_CE_PACKAGE_PARAMETERS(X)                                                                                  \
+  CGAL_CE_PARAMETERS_SHARED_WITH_CGAL_6(X)                                                                             \
   CGAL_CE_OWN_PARAMETERS(X)
 
 // CGAL's parameters that a chain of this package may carry, re-declared as members
 // so that chaining them never falls back to CGAL's own class. The estimators read
 // the first three; the index maps are only carried, so that one chain can also
 // serve CGAL's functions that need them.
-#define CGAL_CE_CGAL_PARAMETERS(X)      \
-  X(vertex_point_t, vertex_point_map)   \
-  X(vertex_normal_map_t, vertex_normal_map) \
-  X(geom_traits_t, geom_traits)         \
-  X(vertex_index_t, vertex_index_map)   \
+#define CGAL_CE_CGAL_PARAMETERS(X)                                                                                     \
+  X(vertex_point_t, vertex_point_map)                                                                                  \
+  X(vertex_normal_map_t, vertex_normal_map)                                                                            \
+  X(geom_traits_t, geom_traits)                                                                                        \
+  X(vertex_index_t, vertex_index_map)                                                                                  \
   X(face_index_t, face_index_map)
 
 namespace CGAL {
 namespace Curvature_estimation {
 namespace internal_np {
 
-#define CGAL_CE_DECLARE_TAG(TAG, NAME) enum TAG { NAME };
+#define CGAL_CE_DECLARE_TAG(TAG, NAME)                                                                                 \
+  enum TAG                                                                                                             \
+  {                                                                                                                    \
+    NAME                                                                                                               \
+  };
 #if CGAL_VERSION_MAJOR >= 6
-#define CGAL_CE_USE_CGAL_TAG(TAG, NAME) \
-  using ::CGAL::internal_np::TAG;       \
+#define CGAL_CE_USE_CGAL_TAG(TAG, NAME)                                                                                \
+  using ::CGAL::internal_np::TAG;                                                                                      \
   using ::CGAL::internal_np::NAME;
 CGAL_CE_PARAMETERS_SHARED_WITH_CGAL_6(CGAL_CE_USE_CGAL_TAG)
 #undef CGAL_CE_USE_CGAL_TAG
@@ -86,8 +89,7 @@ CGAL_CE_OWN_PARAMETERS(CGAL_CE_DECLARE_TAG)
 /// A named-parameter pack: a `CGAL::Named_function_parameters` whose chaining
 /// members also cover the parameters of this package. Users never name this
 /// type; they start a chain with a function of `CGAL::Curvature_estimation::parameters`.
-template <typename T = bool,
-          typename Tag = ::CGAL::internal_np::all_default_t,
+template <typename T = bool, typename Tag = ::CGAL::internal_np::all_default_t,
           typename Base = ::CGAL::internal_np::No_property>
 struct Named_function_parameters : ::CGAL::Named_function_parameters<T, Tag, Base>
 {
@@ -96,15 +98,21 @@ struct Named_function_parameters : ::CGAL::Named_function_parameters<T, Tag, Bas
   using CGAL_pack = ::CGAL::Named_function_parameters<T, Tag, Base>;
   using self = Named_function_parameters<T, Tag, Base>;
 
-  Named_function_parameters() : CGAL_pack() {}
-  Named_function_parameters(const T& v) : CGAL_pack(v) {}
-  Named_function_parameters(const T& v, const Base& b) : CGAL_pack(v, b) {}
+  Named_function_parameters()
+      : CGAL_pack()
+  {}
+  Named_function_parameters(const T& v)
+      : CGAL_pack(v)
+  {}
+  Named_function_parameters(const T& v, const Base& b)
+      : CGAL_pack(v, b)
+  {}
 
-#define CGAL_CE_MEMBER(NS, TAG, NAME)                                   \
-  template <typename K>                                                 \
-  Named_function_parameters<K, NS::TAG, self> NAME(const K& k) const    \
-  {                                                                     \
-    return Named_function_parameters<K, NS::TAG, self>(k, *this);       \
+#define CGAL_CE_MEMBER(NS, TAG, NAME)                                                                                  \
+  template <typename K>                                                                                                \
+  Named_function_parameters<K, NS::TAG, self> NAME(const K& k) const                                                   \
+  {                                                                                                                    \
+    return Named_function_parameters<K, NS::TAG, self>(k, *this);                                                      \
   }
 #define CGAL_CE_PACKAGE_MEMBER(TAG, NAME) CGAL_CE_MEMBER(::CGAL::Curvature_estimation::internal_np, TAG, NAME)
 #define CGAL_CE_CGAL_MEMBER(TAG, NAME) CGAL_CE_MEMBER(::CGAL::internal_np, TAG, NAME)
@@ -122,11 +130,11 @@ using Default_named_parameters = Named_function_parameters<>;
 /// An empty pack: every parameter takes its default value.
 inline Default_named_parameters default_values() { return Default_named_parameters(); }
 
-#define CGAL_CE_FREE_FUNCTION(NS, TAG, NAME)                        \
-  template <typename K>                                             \
-  Named_function_parameters<K, NS::TAG> NAME(const K& k)            \
-  {                                                                 \
-    return Named_function_parameters<K, NS::TAG>(k);                \
+#define CGAL_CE_FREE_FUNCTION(NS, TAG, NAME)                                                                           \
+  template <typename K>                                                                                                \
+  Named_function_parameters<K, NS::TAG> NAME(const K& k)                                                               \
+  {                                                                                                                    \
+    return Named_function_parameters<K, NS::TAG>(k);                                                                   \
   }
 #define CGAL_CE_PACKAGE_FREE(TAG, NAME) CGAL_CE_FREE_FUNCTION(::CGAL::Curvature_estimation::internal_np, TAG, NAME)
 #define CGAL_CE_CGAL_FREE(TAG, NAME) CGAL_CE_FREE_FUNCTION(::CGAL::internal_np, TAG, NAME)
@@ -163,9 +171,8 @@ template <typename NamedParameters>
 void reject_ball_radius(const char* caller)
 {
   if (has_parameter<NamedParameters, internal_np::ball_radius_t>())
-    throw std::invalid_argument(std::string(caller) +
-                                ": ball_radius is not supported; neighborhoods are set in rings "
-                                "(neighborhood_rings)");
+    throw std::invalid_argument(std::string(caller) + ": ball_radius is not supported; neighborhoods are set in rings "
+                                                      "(neighborhood_rings)");
 }
 
 // The `ball_radius` of `np`, or 0 where it has none. Throws std::invalid_argument

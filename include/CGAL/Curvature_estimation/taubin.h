@@ -5,9 +5,9 @@
 
 #include <CGAL/Curvature_estimation/Neighbor_weighting.h>
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
+#include <CGAL/Curvature_estimation/internal/normal_curvature_samples.h>
 #include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/vertex_normals.h>
-#include <CGAL/Curvature_estimation/internal/normal_curvature_samples.h>
 
 #include <CGAL/tags.h>
 
@@ -83,7 +83,8 @@ inline bool taubin_shape_matrix(const std::vector<Normal_curvature_sample>& samp
 ///
 /// \ceConcurrencyTag
 /// \tparam FaceGraph a model of `FaceGraph` (faces may be any polygons).
-/// \tparam NamedParameters a sequence of named parameters, built with the functions of `CGAL::Curvature_estimation::parameters`
+/// \tparam NamedParameters a sequence of named parameters, built with the functions of
+/// `CGAL::Curvature_estimation::parameters`
 ///
 /// \param g the mesh
 /// \param np an optional sequence of named parameters among the ones listed below
@@ -103,8 +104,7 @@ inline bool taubin_shape_matrix(const std::vector<Normal_curvature_sample>& samp
 ///
 /// \throws std::invalid_argument if a parameter is out of its range, or if `ball_radius`
 ///         is given (neighborhoods are set in rings).
-template <typename ConcurrencyTag = CGAL::Sequential_tag,
-          typename FaceGraph,
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename FaceGraph,
           typename NamedParameters = parameters::Default_named_parameters>
 void taubin_curvatures(const FaceGraph& g, const NamedParameters& np = parameters::default_values())
 {

@@ -8,11 +8,11 @@
 #ifndef CGAL_CURVATURE_ESTIMATION_VERTEX_NORMALS_H
 #define CGAL_CURVATURE_ESTIMATION_VERTEX_NORMALS_H
 
-#include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
 #include <CGAL/Curvature_estimation/internal/face_average_normal.h>
 #include <CGAL/Curvature_estimation/internal/face_graph_platelet.h>
+#include <CGAL/Curvature_estimation/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
@@ -49,8 +49,8 @@ struct Vertex_normal_estimator
   // The same as Gauss_map_estimator's normals, computed on demand; false where `v` has none.
   bool find(typename boost::graph_traits<FaceGraph>::vertex_descriptor v, Eigen::Vector3d& n)
   {
-    return fitter.normal(v, method, n) ||
-           (fall_back && method == Vertex_normal_method::quadric_fit && fitter.normal(v, Vertex_normal_method::area_weighted, n));
+    return fitter.normal(v, method, n) || (fall_back && method == Vertex_normal_method::quadric_fit &&
+                                           fitter.normal(v, Vertex_normal_method::area_weighted, n));
   }
 };
 
@@ -178,12 +178,9 @@ struct Vertex_normal_estimator
  *
  * \throws std::invalid_argument if a ring, condition, `fit_degree` or `ball_radius` parameter is out of its range.
  */
-template <typename ConcurrencyTag = CGAL::Sequential_tag,
-          typename FaceGraph,
-          typename VertexNormalMap,
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename FaceGraph, typename VertexNormalMap,
           typename NamedParameters = parameters::Default_named_parameters>
-void estimate_vertex_normals(const FaceGraph& g,
-                             VertexNormalMap normals,
+void estimate_vertex_normals(const FaceGraph& g, VertexNormalMap normals,
                              const NamedParameters& np = parameters::default_values())
 {
   using ::CGAL::parameters::choose_parameter;
@@ -196,7 +193,8 @@ void estimate_vertex_normals(const FaceGraph& g,
   using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
 
   const GT traits = choose_parameter<GT>(get_parameter(np, ::CGAL::internal_np::geom_traits));
-  const VPM vpm = internal::parameter_or(np, ::CGAL::internal_np::vertex_point, get_const_property_map(CGAL::vertex_point, g));
+  const VPM vpm =
+    internal::parameter_or(np, ::CGAL::internal_np::vertex_point, get_const_property_map(CGAL::vertex_point, g));
   const internal::Fit_parameters fit = internal::curvature_fit_parameters(np, "estimate_vertex_normals", 4, true);
 
   constexpr bool write_status = internal::has_parameter<NamedParameters, internal_np::vertex_estimation_status_map_t>();
@@ -208,8 +206,7 @@ void estimate_vertex_normals(const FaceGraph& g,
   const internal::Vertex_normal_estimator<FaceGraph, VPM> estimator{
     internal::Platelet_fitter<FaceGraph, VPM>(g, vpm, fit.settings), fit.normal_method, false};
   internal::estimate_at_vertices<ConcurrencyTag, false>(
-    vertices(g), estimator,
-    [&](vertex_descriptor v, const Eigen::Vector3d& n) {
+    vertices(g), estimator, [&](vertex_descriptor v, const Eigen::Vector3d& n) {
       const bool estimated = n.squaredNorm() > 0;
       put(normals, v, estimated ? construct_vector(FT(n.x()), FT(n.y()), FT(n.z())) : no_normal);
       if constexpr (write_status)

@@ -55,8 +55,8 @@ inline Curve_estimate curve_from_derivatives(const Eigen::Vector3d& d1, const Ei
   result.tangent = t;
   result.curvature_vector = vector;
   result.curvature = vector.norm();
-  result.principal_normal = result.curvature > 0 ? Eigen::Vector3d(vector / result.curvature)
-                                                 : Eigen::Vector3d(Eigen::Vector3d::Zero());
+  result.principal_normal =
+    result.curvature > 0 ? Eigen::Vector3d(vector / result.curvature) : Eigen::Vector3d(Eigen::Vector3d::Zero());
   return result;
 }
 
@@ -109,7 +109,8 @@ inline Curve_estimate circle_curve_curvature(const Eigen::Vector3d& p0, const Ei
   result.tangent = tangent / tangent_length;
   result.curvature = curvature;
   result.curvature_vector = vector;
-  result.principal_normal = curvature > 0 ? Eigen::Vector3d(vector / curvature) : Eigen::Vector3d(Eigen::Vector3d::Zero());
+  result.principal_normal =
+    curvature > 0 ? Eigen::Vector3d(vector / curvature) : Eigen::Vector3d(Eigen::Vector3d::Zero());
   return result;
 }
 

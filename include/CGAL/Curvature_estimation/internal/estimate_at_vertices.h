@@ -17,9 +17,9 @@
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_ESTIMATE_AT_VERTICES_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_ESTIMATE_AT_VERTICES_H
 
-#include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/internal/for_each_vertex.h>
 #include <CGAL/Curvature_estimation/internal/surface_estimate.h>
+#include <CGAL/Curvature_estimation/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 

@@ -96,19 +96,16 @@ Face_walk walk_face(typename boost::graph_traits<FaceGraph>::halfedge_descriptor
 /// \tparam VPM a model of `ReadablePropertyMap` from the vertex descriptor to a point
 ///         type with `x()`, `y()`, `z()` convertible by `CGAL::to_double()`
 template <typename FaceGraph, typename VPM>
-Eigen::Vector3d face_average_normal(typename boost::graph_traits<FaceGraph>::vertex_descriptor v,
-                                    const FaceGraph& g,
-                                    const VPM& vpm,
-                                    Vertex_normal_method method)
+Eigen::Vector3d face_average_normal(typename boost::graph_traits<FaceGraph>::vertex_descriptor v, const FaceGraph& g,
+                                    const VPM& vpm, Vertex_normal_method method)
 {
   using Graph_traits = boost::graph_traits<FaceGraph>;
   using vertex_descriptor = typename Graph_traits::vertex_descriptor;
   using halfedge_descriptor = typename Graph_traits::halfedge_descriptor;
 
   if (method == Vertex_normal_method::quadric_fit)
-    throw std::invalid_argument(
-      "CGAL::Curvature_estimation::internal::face_average_normal(): quadric_fit is not an "
-      "average of face normals; use area_weighted, angle_weighted or centroid_weighted");
+    throw std::invalid_argument("CGAL::Curvature_estimation::internal::face_average_normal(): quadric_fit is not an "
+                                "average of face normals; use area_weighted, angle_weighted or centroid_weighted");
 
   const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
   const Eigen::Vector3d nan = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());

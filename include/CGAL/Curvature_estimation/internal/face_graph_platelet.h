@@ -39,8 +39,10 @@ public:
   using Estimate = Surface_estimate;
 
   // `adjacency`: see Ring_collector::use_adjacency.
-  Face_graph_platelet(const FaceGraph& g, VertexPointMap vpm, std::shared_ptr<const Vertex_adjacency> adjacency = nullptr)
-    : g_(&g), vpm_(vpm)
+  Face_graph_platelet(const FaceGraph& g, VertexPointMap vpm,
+                      std::shared_ptr<const Vertex_adjacency> adjacency = nullptr)
+      : g_(&g)
+      , vpm_(vpm)
   {
     rings_.use_adjacency(std::move(adjacency));
   }
@@ -78,8 +80,7 @@ public:
   static Surface_estimate estimate(Estimation_status status, const Graph_curvature<3>& curvature, double scale)
   {
     return Surface_estimate::from_principal(status, curvature.curvatures[0] / scale, curvature.curvatures[1] / scale,
-                                            curvature.directions.col(0), curvature.directions.col(1),
-                                            curvature.normal);
+                                            curvature.directions.col(0), curvature.directions.col(1), curvature.normal);
   }
 
 private:
@@ -116,15 +117,15 @@ class Platelet_fitter : public Platelet_fit_core<Face_graph_platelet<FaceGraph, 
 {
 public:
   Platelet_fitter(const FaceGraph& g, VertexPointMap vpm, const Platelet_fit_settings& settings)
-    : Platelet_fitter(g, vpm, settings, beyond_one_ring(settings) ? vertex_adjacency(g) : nullptr)
+      : Platelet_fitter(g, vpm, settings, beyond_one_ring(settings) ? vertex_adjacency(g) : nullptr)
   {}
 
   // With the rings from `adjacency` (null: by halfedge circulation), for a fitter
   // that runs at few vertices.
   Platelet_fitter(const FaceGraph& g, VertexPointMap vpm, const Platelet_fit_settings& settings,
                   std::shared_ptr<const Vertex_adjacency> adjacency)
-    : Platelet_fit_core<Face_graph_platelet<FaceGraph, VertexPointMap>>(
-        Face_graph_platelet<FaceGraph, VertexPointMap>(g, vpm, std::move(adjacency)), settings)
+      : Platelet_fit_core<Face_graph_platelet<FaceGraph, VertexPointMap>>(
+          Face_graph_platelet<FaceGraph, VertexPointMap>(g, vpm, std::move(adjacency)), settings)
   {}
 
 private:

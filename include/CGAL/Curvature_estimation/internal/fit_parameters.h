@@ -19,13 +19,14 @@ namespace internal {
 
 struct Platelet_fit_settings
 {
-  int rings = 1;            // rings an interior vertex starts with
-  int boundary_rings = 1;   // rings a boundary vertex starts with
-  int max_rings = 3;        // widening stops here
+  int rings = 1;          // rings an interior vertex starts with
+  int boundary_rings = 1; // rings a boundary vertex starts with
+  int max_rings = 3;      // widening stops here
   double max_condition = 1e3;
-  int degree = 2;           // fit_degree: 2 Hamann's fit (and its default normal), 3 or 4 a Taylor fit of that degree
-  double ball_radius = 0;   // > 0: the fits over the ball of this radius (see Platelet_fit_core::fit_in_ball), not the rings
-  bool smooth_weights = false;  // in the ball, Neighbor_weighting::smooth (else uniform)
+  int degree = 2; // fit_degree: 2 Hamann's fit (and its default normal), 3 or 4 a Taylor fit of that degree
+  double ball_radius =
+    0; // > 0: the fits over the ball of this radius (see Platelet_fit_core::fit_in_ball), not the rings
+  bool smooth_weights = false; // in the ball, Neighbor_weighting::smooth (else uniform)
   // Whether test (b) of quadric_fit.h (whitened coordinates) may accept the
   // widest neighborhood where test (a) refuses every one; false: test (a) alone.
   bool whitened_conditioning = true;

@@ -33,10 +33,9 @@ struct Accessible_concurrently : std::false_type
 
 template <typename Map>
 struct Accessible_concurrently<
-  Map, std::enable_if_t<std::is_base_of<CGAL::Properties::Property_map_base<typename Map::key_type,
-                                                                             typename Map::value_type, Map>,
-                                        Map>::value>>
-  : std::bool_constant<!std::is_same<typename Map::value_type, bool>::value>
+  Map, std::enable_if_t<std::is_base_of<
+         CGAL::Properties::Property_map_base<typename Map::key_type, typename Map::value_type, Map>, Map>::value>>
+    : std::bool_constant<!std::is_same<typename Map::value_type, bool>::value>
 {};
 
 template <typename Map>
@@ -89,7 +88,8 @@ void for_each_vertex(const VertexRange& vertices, const Worker& worker, Store st
         block.clear();
         for (; it != end && block.size() < block_size; ++it)
           block.push_back(*it);
-        for_block([&](Worker& local, std::size_t i) { store(block[i], local.compute(block[i], local.load(block[i]))); });
+        for_block(
+          [&](Worker& local, std::size_t i) { store(block[i], local.compute(block[i], local.load(block[i]))); });
       }
     } else {
       std::vector<Input> inputs;

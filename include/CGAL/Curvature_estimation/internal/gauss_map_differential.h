@@ -11,9 +11,9 @@
 #include <CGAL/Curvature_estimation/internal/shape_matrix_estimate.h>
 #include <CGAL/Curvature_estimation/internal/tangent_frame.h>
 
+#include <CGAL/Surface_mesh/Surface_mesh_fwd.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
-#include <CGAL/Surface_mesh/Surface_mesh_fwd.h>
 
 #include <boost/functional/hash.hpp>
 #include <boost/graph/graph_traits.hpp>
@@ -45,7 +45,9 @@ namespace internal {
 class Gauss_map_differential
 {
 public:
-  explicit Gauss_map_differential(bool centroid_weights = true) : centroid_weights_(centroid_weights) {}
+  explicit Gauss_map_differential(bool centroid_weights = true)
+      : centroid_weights_(centroid_weights)
+  {}
 
   void clear()
   {
@@ -90,8 +92,7 @@ public:
   // The 3x3 differential dN (dN(u) = differential() u).
   Eigen::Matrix3d differential() const
   {
-    return infinite_count_ > 0 ? Eigen::Matrix3d(infinite_sum_ / infinite_count_)
-                               : Eigen::Matrix3d(sum_ / weight_sum_);
+    return infinite_count_ > 0 ? Eigen::Matrix3d(infinite_sum_ / infinite_count_) : Eigen::Matrix3d(sum_ / weight_sum_);
   }
 
   // a_ij = <e_i, dN(e_j)> in the frame (eq. 28); with outward normals a sphere of
@@ -122,10 +123,7 @@ private:
 class Gauss_map_least_squares
 {
 public:
-  void clear()
-  {
-    moments_ = products_ = Eigen::Matrix2d::Zero();
-  }
+  void clear() { moments_ = products_ = Eigen::Matrix2d::Zero(); }
 
   void add(const Tangent_frame& tangents, const Eigen::Vector3d& offset, const Eigen::Vector3d& normal_difference)
   {
@@ -175,7 +173,7 @@ class Vertex_normal_table
 public:
   explicit Vertex_normal_table(const FaceGraph& g)
   {
-    if constexpr (by_index)  // indices of removed, not yet collected vertices included
+    if constexpr (by_index) // indices of removed, not yet collected vertices included
       normals_.assign(g.number_of_vertices() + g.number_of_removed_vertices(),
                       Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
     else
@@ -213,9 +211,9 @@ private:
 // How Gauss_map_estimator combines the normals around a vertex.
 enum class Gauss_map_differential_method : unsigned char
 {
-  least_squares_2_ring,    // Gauss_map_least_squares over the vertices of the 2-ring (the default)
-  face_centroid_weighted,  // Gauss_map_differential, centroid weights: Chen, Wu and Chi's
-  face_area_weighted       // Gauss_map_differential, area weights
+  least_squares_2_ring,   // Gauss_map_least_squares over the vertices of the 2-ring (the default)
+  face_centroid_weighted, // Gauss_map_differential, centroid weights: Chen, Wu and Chi's
+  face_area_weighted      // Gauss_map_differential, area weights
 };
 
 // A shared Vertex_normal_table as the normals of Gauss_map_estimator.
@@ -256,8 +254,11 @@ public:
   Gauss_map_estimator(const FaceGraph& g, VertexPointMap vpm, Normals normals,
                       Gauss_map_differential_method method = Gauss_map_differential_method::least_squares_2_ring,
                       double ball_radius = 0)
-    : local_(g, vpm), normals_(std::move(normals)), method_(method),
-      differential_(method == Gauss_map_differential_method::face_centroid_weighted), ball_radius_(ball_radius)
+      : local_(g, vpm)
+      , normals_(std::move(normals))
+      , method_(method)
+      , differential_(method == Gauss_map_differential_method::face_centroid_weighted)
+      , ball_radius_(ball_radius)
   {}
 
   Surface_estimate estimate(vertex_descriptor v, const Eigen::Vector3d*)
@@ -335,7 +336,8 @@ private:
       [&] { return rings_.ball_size(); }, [&] { return fit_least_squares(tangents, normal, true); });
     if (growths == 0)
       return Surface_estimate();
-    Surface_estimate e = shape_estimate_from_matrix(least_squares_.shape_matrix(), tangents, normal, local_.scale(), true);
+    Surface_estimate e =
+      shape_estimate_from_matrix(least_squares_.shape_matrix(), tangents, normal, local_.scale(), true);
     if (growths > 1 && e.status == Estimation_status::ok)
       e.status = Estimation_status::widened;
     return e;

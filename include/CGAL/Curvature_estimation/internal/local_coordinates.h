@@ -42,7 +42,7 @@ Eigen::Vector3d point_in_double(const VertexPointMap& vpm, VertexDescriptor u)
 // scale invariant.
 template <typename FaceGraph, typename VertexPointMap>
 double neighbor_length_scale(typename boost::graph_traits<FaceGraph>::vertex_descriptor v, const FaceGraph& g,
-                              const VertexPointMap& vpm, const Eigen::Vector3d& center)
+                             const VertexPointMap& vpm, const Eigen::Vector3d& center)
 {
   if (halfedge(v, g) == boost::graph_traits<FaceGraph>::null_halfedge())
     return 0;
@@ -66,7 +66,10 @@ class Vertex_local_coordinates
 public:
   using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
 
-  Vertex_local_coordinates(const FaceGraph& g, VertexPointMap vpm) : g_(&g), vpm_(vpm) {}
+  Vertex_local_coordinates(const FaceGraph& g, VertexPointMap vpm)
+      : g_(&g)
+      , vpm_(vpm)
+  {}
 
   // Centers the coordinates on `v`; false where its point is not finite or it has
   // no usable neighbor.

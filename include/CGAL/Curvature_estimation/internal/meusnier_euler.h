@@ -40,8 +40,8 @@ inline double meusnier_normal_curvature(const Eigen::Vector3d& curvature_vector,
 // least-squares normal, the eigenvector of the smallest eigenvalue of
 // sum t_i t_i^T. As accurate as the tangents: O(h^2n) with the O(h^2n) tangents.
 // Returns false (normal NaN) when the tangents do not span a plane.
-inline bool normal_from_tangents(const Eigen::Vector3d* tangents, std::size_t count,
-                                 const Eigen::Vector3d& orientation, Eigen::Vector3d& normal)
+inline bool normal_from_tangents(const Eigen::Vector3d* tangents, std::size_t count, const Eigen::Vector3d& orientation,
+                                 Eigen::Vector3d& normal)
 {
   normal = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
   if (count < 2)
@@ -97,8 +97,7 @@ constexpr double euler_max_condition_number = 20;
 // not be unit nor exactly tangent (they are projected); `curvatures` are the
 // normal curvatures (package sign, see meusnier_normal_curvature).
 inline Euler_solution euler_fit(const Eigen::Vector3d* directions, const double* curvatures, std::size_t count,
-                                const Eigen::Vector3d& normal,
-                                double max_condition_number = euler_max_condition_number)
+                                const Eigen::Vector3d& normal, double max_condition_number = euler_max_condition_number)
 {
   Euler_solution result;
   if (count < 3 || !normal.allFinite())

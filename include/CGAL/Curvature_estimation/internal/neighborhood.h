@@ -123,10 +123,10 @@ private:
     std::size_t index;
   };
   bool active_ = false;
-  std::vector<char> inside_;  // per gathered vertex
+  std::vector<char> inside_; // per gathered vertex
   std::size_t size_ = 0;
   std::vector<Outside> outside_;
-  std::vector<Vertex> to_expand_;  // in the ball, their neighbors still to be met
+  std::vector<Vertex> to_expand_; // in the ball, their neighbors still to be met
 };
 
 // Calls visit(neighbors[k]) for offsets[i] <= k < offsets[i + 1]: the neighbors
@@ -147,7 +147,7 @@ void for_each_listed_neighbor(const Offsets& offsets, const Neighbors& neighbors
 // fit_degree(4) spent 16% of its time there). 28 bytes per vertex of valence 6.
 struct Vertex_adjacency
 {
-  std::vector<std::uint32_t> offsets;  // per vertex index, and one more
+  std::vector<std::uint32_t> offsets; // per vertex index, and one more
   std::vector<std::uint32_t> neighbors;
 };
 
@@ -178,7 +178,7 @@ std::shared_ptr<const Vertex_adjacency> vertex_adjacency(const FaceGraph& g)
     std::vector<std::uint32_t>& neighbors = adjacency->neighbors;
     offsets.assign(end + 1, 0);
     neighbors.reserve(num_halfedges(g));
-    std::size_t next = 0;  // the first index whose offset is not set; those without a vertex get no neighbors
+    std::size_t next = 0; // the first index whose offset is not set; those without a vertex get no neighbors
     for (vertex_descriptor v : vertices(g)) {
       const std::size_t i = static_cast<std::size_t>(v);
       for (; next <= i; ++next)
@@ -275,8 +275,9 @@ public:
       ring_ends_.push_back(vertices_.size());
     }
     const auto neighbors = [&](vertex_descriptor v, const auto& visit) { for_each_neighbor(v, g, visit); };
-    const bool more = ball_.grow(vertices_, ring_ends_[1], squared_radius, neighbors,
-                                 [&](vertex_descriptor w) { return reach(w); }, squared_distance);
+    const bool more = ball_.grow(
+      vertices_, ring_ends_[1], squared_radius, neighbors, [&](vertex_descriptor w) { return reach(w); },
+      squared_distance);
     ring_ends_.back() = vertices_.size();
     return more;
   }
@@ -349,7 +350,7 @@ private:
   // A new stamp on the vertices gathered so far: the first extend or grow_ball since start.
   void stamp_gathered()
   {
-    if (++stamp_ == 0) {  // wrapped around: no stamp is current
+    if (++stamp_ == 0) { // wrapped around: no stamp is current
       std::fill(stamps_.begin(), stamps_.end(), 0);
       stamp_ = 1;
     }
@@ -374,10 +375,10 @@ private:
   std::shared_ptr<const Vertex_adjacency> adjacency_;
   std::vector<std::uint32_t> stamps_;
   std::uint32_t stamp_ = 0;
-  bool stamped_ = false;  // whether the gathered vertices carry stamp_ (indexed only)
+  bool stamped_ = false; // whether the gathered vertices carry stamp_ (indexed only)
   std::vector<vertex_descriptor> vertices_;
   std::vector<std::size_t> ring_ends_;
-  std::vector<char> has_face_;  // per incoming halfedge of the center
+  std::vector<char> has_face_; // per incoming halfedge of the center
   Ball<vertex_descriptor> ball_;
   bool center_on_border_ = false;
   bool one_ring_in_fan_order_ = false;

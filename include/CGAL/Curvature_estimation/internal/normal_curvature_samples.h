@@ -10,7 +10,6 @@
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_NORMAL_CURVATURE_SAMPLES_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_NORMAL_CURVATURE_SAMPLES_H
 
-#include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
 #include <CGAL/Curvature_estimation/internal/face_average_normal.h>
 #include <CGAL/Curvature_estimation/internal/face_graph_platelet.h>
@@ -18,6 +17,7 @@
 #include <CGAL/Curvature_estimation/internal/neighborhood.h>
 #include <CGAL/Curvature_estimation/internal/shape_matrix_estimate.h>
 #include <CGAL/Curvature_estimation/internal/tangent_frame.h>
+#include <CGAL/Curvature_estimation/parameters.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -39,11 +39,11 @@ namespace internal {
 
 struct Normal_curvature_sample
 {
-  Eigen::Vector2d direction;  // unit tangent t_i in the tangent frame
-  double curvature;           // k_n(t_i), in coordinates divided by the length scale
-  double squared_length;      // |q_i - p|^2 in those coordinates
-  double area_weight;         // sum of the areas of the faces on the edge (p, q_i); 0 beyond the 1-ring
-  double centroid_weight;     // sum of 1 / |G_f - p|^2 over the faces f on the edge; 0 beyond the 1-ring
+  Eigen::Vector2d direction; // unit tangent t_i in the tangent frame
+  double curvature;          // k_n(t_i), in coordinates divided by the length scale
+  double squared_length;     // |q_i - p|^2 in those coordinates
+  double area_weight;        // sum of the areas of the faces on the edge (p, q_i); 0 beyond the 1-ring
+  double centroid_weight;    // sum of 1 / |G_f - p|^2 over the faces f on the edge; 0 beyond the 1-ring
 };
 
 // Gathers the samples of one vertex; allocation-free once `samples` has grown.
@@ -56,7 +56,9 @@ public:
   using halfedge_descriptor = typename Graph_traits::halfedge_descriptor;
   using face_descriptor = typename Graph_traits::face_descriptor;
 
-  Normal_curvature_sampler(const FaceGraph& g, VertexPointMap vpm) : local_(g, vpm) {}
+  Normal_curvature_sampler(const FaceGraph& g, VertexPointMap vpm)
+      : local_(g, vpm)
+  {}
 
   // Fills `samples` at `v` for the unit `normal` and its tangent frame: with
   // `rings == 1` one sample per edge (p, q_i), with face weights; wider, one per
@@ -176,9 +178,13 @@ void normal_curvature_sample_curvatures(const FaceGraph& g, const NamedParameter
   const Fit_parameters fit = fit_parameters(np, caller);
   estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
     using VPM = std::decay_t<decltype(vpm)>;
-    return Normal_curvature_sample_estimator<FaceGraph, VPM, Solve>{Platelet_fitter<FaceGraph, VPM>(g, vpm, fit.settings),
-                                                                    Normal_curvature_sampler<FaceGraph, VPM>(g, vpm),
-                                                                    fit.normal_method, rings, solve, {}};
+    return Normal_curvature_sample_estimator<FaceGraph, VPM, Solve>{
+      Platelet_fitter<FaceGraph, VPM>(g, vpm, fit.settings),
+      Normal_curvature_sampler<FaceGraph, VPM>(g, vpm),
+      fit.normal_method,
+      rings,
+      solve,
+      {}};
   });
 }
 

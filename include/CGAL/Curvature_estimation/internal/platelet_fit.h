@@ -98,7 +98,8 @@ public:
   using Tangents = Eigen::Matrix<double, N, D>;
 
   Platelet_fit_core(Neighborhood neighborhood, const Platelet_fit_settings& settings)
-    : neighborhood_(std::move(neighborhood)), settings_(settings)
+      : neighborhood_(std::move(neighborhood))
+      , settings_(settings)
   {}
 
   // Hamann's fit: the paraboloid through the k-ring in the tangent frame of the
@@ -187,10 +188,7 @@ public:
 
   // The neighbors gathered by the last fit or normal, on every ring it reached
   // (0 where its vertex had no finite point); in a ball, those inside it.
-  std::size_t neighbors() const
-  {
-    return in_ball() ? ball_neighbors_ : offsets_.empty() ? 0 : offsets_.size() - 1;
-  }
+  std::size_t neighbors() const { return in_ball() ? ball_neighbors_ : offsets_.empty() ? 0 : offsets_.size() - 1; }
 
   // Whether the last fit(v, method) of fit_degree 2 over rings was Hamann's fit at
   // a boundary vertex that only test (b) accepted, for its normal or for itself.
@@ -217,7 +215,8 @@ public:
         return false;
       Tangents tangents = tangent_basis<N>(normal);
       const bool corrected = with_fit_of_degree<1>([&](auto& fit) {
-        return fit_rings_of_degree(normal, tangents, true, fit) != 0 && correct_normal(normal, tangents, fit.gradient());
+        return fit_rings_of_degree(normal, tangents, true, fit) != 0 &&
+               correct_normal(normal, tangents, fit.gradient());
       });
       if (corrected)
         return true;
@@ -310,8 +309,9 @@ private:
   template <typename Fit>
   int fit_ball(const Vector& normal, Fit& fit)
   {
-    const double max_condition =
-      ball_condition_factor * (settings_.degree == 2 ? 1 : degree_condition_factor(settings_.degree)) * settings_.max_condition;
+    const double max_condition = ball_condition_factor *
+                                 (settings_.degree == 2 ? 1 : degree_condition_factor(settings_.degree)) *
+                                 settings_.max_condition;
     const Tangents tangents = tangent_basis<N>(normal);
     const auto accepted = [&] {
       if (fit_in_frame(normal, tangents, 0, max_condition, fit))
@@ -320,8 +320,8 @@ private:
       return settings_.whitened_conditioning && fit.solve_whitened(max_condition, samples);
     };
     return fit_in_growing_ball(
-      1.0, Fit::unknowns, [&](double radius) { return reach_ball(radius); },
-      [&] { return neighborhood_.ball_size(); }, accepted);
+      1.0, Fit::unknowns, [&](double radius) { return reach_ball(radius); }, [&] { return neighborhood_.ball_size(); },
+      accepted);
   }
 
   // Grows the ball to `radius` (in units of the ball radius); false when no
@@ -629,9 +629,8 @@ private:
   bool fit_in_frame(const Vector& normal, const Tangents& tangents, int rings, double max_condition, Fit& fit) const
   {
     fit.clear();
-    for_each_sample<Fit>(normal, tangents, rings, [&](const auto& x, double height, double weight) {
-      fit.add(x, height, weight);
-    });
+    for_each_sample<Fit>(normal, tangents, rings,
+                         [&](const auto& x, double height, double weight) { fit.add(x, height, weight); });
     return fit.solve(max_condition);
   }
 
@@ -657,7 +656,7 @@ private:
       return;
     }
     const bool weighted = settings_.degree == 2 && Fit::unknowns > Taylor_fit<D, 1, 2>::unknowns;
-    const std::size_t end = neighborhood_.ring_end(rings);  // hoisted: add writes memory
+    const std::size_t end = neighborhood_.ring_end(rings); // hoisted: add writes memory
     for (std::size_t i = 1; i < end; ++i) {
       const Vector& q = offsets_[i];
       if (finite_[i])
@@ -667,19 +666,19 @@ private:
 
   Neighborhood neighborhood_;
   Platelet_fit_settings settings_;
-  std::vector<Vector> offsets_;  // scaled p_w - p_v, aligned with neighborhood_.vertices()
-  std::vector<char> finite_;     // whether each offset is finite
+  std::vector<Vector> offsets_; // scaled p_w - p_v, aligned with neighborhood_.vertices()
+  std::vector<char> finite_;    // whether each offset is finite
   Vector center_ = Vector::Zero();
   double scale_ = 1;
-  double inverse_scale_ = 1;     // 1 / scale_, or 0 where that is not a normal number
+  double inverse_scale_ = 1; // 1 / scale_, or 0 where that is not a normal number
   bool on_border_ = false;
-  bool whitened_ = false;  // whether test (b) accepted a fit since gather(v)
+  bool whitened_ = false; // whether test (b) accepted a fit since gather(v)
   // Where the normal fit needed test (b), the curvature fit starts on the rings
   // that gave the normal (the widest; the narrower ones failed test (a) for the
   // normal). 0: it starts on the settings' rings.
   int curvature_rings_ = 0;
-  std::size_t ball_neighbors_ = 0;  // in the ball of the last fit in a ball, the vertex excluded
-  double ball_squared_radius_ = 1;  // its squared radius, in units of scale_
+  std::size_t ball_neighbors_ = 0; // in the ball of the last fit in a ball, the vertex excluded
+  double ball_squared_radius_ = 1; // its squared radius, in units of scale_
 };
 
 } // namespace internal

@@ -60,8 +60,8 @@
 // polynomial is the same function of the point): solve_whitened computes it in y
 // and maps it back, a_x = T^T a_y, i.e. g = W^T g_y and C = W^T C_y W.
 //
-// A fit can be solved again on the same samples with other heights (solve_again): only the right-hand side changes, and the inverse of the
-// normal matrix, in the coordinates where it was accepted, is kept for that.
+// A fit can be solved again on the same samples with other heights (solve_again): only the right-hand side changes, and
+// the inverse of the normal matrix, in the coordinates where it was accepted, is kept for that.
 //
 // The curvature's own quartic term. For a surface in Monge form at p, principal
 // curvatures k1, k2 along x and y, the quartic part of the height is
@@ -86,13 +86,11 @@
 // LastOrder 4, 25 against 45 at 3, with 8 more of degree 7 for the quartic
 // term above), which add sums per sample; the right-hand side is summed in the
 // unscaled monomials, scaled once per solve. For surfaces at LastOrder 3 and 4
-// both are summed two at a time, in pairs of SSE2 lanes (see fill_windows). N = L L^T (Cholesky, read from the moments, in pairs of
-// lanes too) solves by substitution. Test (a) takes the first of three upper
-// bounds of cond_1(N) that is below the threshold: one from L alone (two
-// triangular solves), one from L^-1 (inverting L, in pairs of lanes, costs as
-// much as the factorisation), and the exact number (N^-1 = L^-T L^-1, as costly
-// again), so that the decisions are those of the exact number. Each lane
-// computes what the scalar loops would, in the same order: the results do not
+// both are summed two at a time, in pairs of SSE2 lanes (see fill_windows). N = L L^T (Cholesky, read from the moments,
+// in pairs of lanes too) solves by substitution. Test (a) takes the first of three upper bounds of cond_1(N) that is
+// below the threshold: one from L alone (two triangular solves), one from L^-1 (inverting L, in pairs of lanes, costs
+// as much as the factorisation), and the exact number (N^-1 = L^-T L^-1, as costly again), so that the decisions are
+// those of the exact number. Each lane computes what the scalar loops would, in the same order: the results do not
 // depend on the pairs, to the bit.
 //
 // The estimators (platelet_fit.h) try (a) on each neighborhood up to the widest,
@@ -294,7 +292,7 @@ private:
       for (int d = 0; d < 3; ++d)
         for (int t = 2; t <= e.power[d]; ++t)
           orderings /= t;
-      scale[column] = square_root(orderings) / (order == 2 ? 2 : 1);  // the quadratic ones as in 1/2 x^T C x
+      scale[column] = square_root(orderings) / (order == 2 ? 2 : 1); // the quadratic ones as in 1/2 x^T C x
       ++column;
       // the next non-decreasing index tuple
       int t = order - 1;
@@ -310,8 +308,13 @@ private:
 
   static constexpr double square_root(int n)
   {
-    return n == 1 ? 1.0 : n == 2 ? 1.4142135623730950488 : n == 3 ? 1.7320508075688772935 : n == 4 ? 2.0
-         : n == 6 ? 2.4494897427831780982 : n == 12 ? 3.4641016151377545870 : 4.8989794855663561964;
+    return n == 1    ? 1.0
+           : n == 2  ? 1.4142135623730950488
+           : n == 3  ? 1.7320508075688772935
+           : n == 4  ? 2.0
+           : n == 6  ? 2.4494897427831780982
+           : n == 12 ? 3.4641016151377545870
+                     : 4.8989794855663561964;
   }
 
   constexpr int moment_index(const Monomial_exponents& e) const
@@ -360,7 +363,10 @@ public:
   void clear() { reset(); }
 
   // One sample: a point of the tangent space, the height above it, its weight.
-  void add(const Point& x, double height, double weight = 1.0) { accumulate<Tables::first_own_moment>(x, height, weight); }
+  void add(const Point& x, double height, double weight = 1.0)
+  {
+    accumulate<Tables::first_own_moment>(x, height, weight);
+  }
 
   int size() const { return size_; }
 
@@ -445,7 +451,7 @@ public:
     whitened_condition_ = one_norm<tested>() * inverse_one_norm<tested>(F);
     if (!(whitened_condition_ <= max_condition))
       return false;
-    if (condition_pending_) {  // test (a)'s factor is about to be replaced
+    if (condition_pending_) { // test (a)'s factor is about to be replaced
       condition_ = condition_number();
       condition_pending_ = false;
     }
@@ -498,8 +504,8 @@ public:
     CGAL_CURVATURE_ESTIMATION_UNROLL
     for (int k = 0; k < unknowns; ++k)
       CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int j = 0; j < 5; ++j)
-        right_hand_side_[k] -= quartic[j] * moments_[tables_.quartic_moment[k][j]];
+    for (int j = 0; j < 5; ++j)
+      right_hand_side_[k] -= quartic[j] * moments_[tables_.quartic_moment[k][j]];
     solve_with_factor();
     if (whitened_)
       map_back();
@@ -600,18 +606,17 @@ private:
     CGAL_CURVATURE_ESTIMATION_UNROLL
     for (int i = 0; i < D; ++i)
       CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int j = i; j < D; ++j) {
-        const double value = (i == j ? 1.0 : half_sqrt2) * coefficients[column];
-        hessian_(i, j) = value;
-        hessian_(j, i) = value;
-        ++column;
-      }
+    for (int j = i; j < D; ++j) {
+      const double value = (i == j ? 1.0 : half_sqrt2) * coefficients[column];
+      hessian_(i, j) = value;
+      hessian_(j, i) = value;
+      ++column;
+    }
     if constexpr (linear_terms)
       CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int i = 0; i < D; ++i)
-        gradient_[i] = coefficients[column + i];
-    else
-      gradient_.setZero();
+    for (int i = 0; i < D; ++i)
+      gradient_[i] = coefficients[column + i];
+    else gradient_.setZero();
   }
 
   // W = L^-1 for M = L L^T (see the header comment), lower triangular; false
@@ -644,7 +649,7 @@ private:
         W(i, j) = value / L(i, i);
       }
     }
-    return M.trace() * W.squaredNorm() <= max_whitening_condition;  // tr(M^-1) = |W|_F^2
+    return M.trace() * W.squaredNorm() <= max_whitening_condition; // tr(M^-1) = |W|_F^2
   }
 
   // From the coefficients of y = W x to those of x:
@@ -844,7 +849,7 @@ private:
       double* column = L + factor_stride * j;
       CGAL_CURVATURE_ESTIMATION_UNROLL
       for (int p = j / 2; p < pairs; ++p) {
-        const int i = 2 * p;  // rows i and i + 1 (row j - 1 or n: unused, any finite number)
+        const int i = 2 * p; // rows i and i + 1 (row j - 1 or n: unused, any finite number)
         Pair value(normal_entry(i, j), normal_entry(i + 1 < n ? i + 1 : i, j));
         CGAL_CURVATURE_ESTIMATION_UNROLL
         for (int k = 0; k < j; ++k)
@@ -917,15 +922,15 @@ private:
     CGAL_CURVATURE_ESTIMATION_UNROLL
     for (int i = 0; i < n; ++i)
       CGAL_CURVATURE_ESTIMATION_UNROLL
-      for (int j = 0; j <= i; ++j) {
-        double value = 0;
-        CGAL_CURVATURE_ESTIMATION_UNROLL
-        for (int k = i; k < n; ++k)
-          value += F[factor_index(k, i)] * F[factor_index(k, j)];
-        column_sums[j] += std::abs(value);
-        if (j != i)
-          column_sums[i] += std::abs(value);
-      }
+    for (int j = 0; j <= i; ++j) {
+      double value = 0;
+      CGAL_CURVATURE_ESTIMATION_UNROLL
+      for (int k = i; k < n; ++k)
+        value += F[factor_index(k, i)] * F[factor_index(k, j)];
+      column_sums[j] += std::abs(value);
+      if (j != i)
+        column_sums[i] += std::abs(value);
+    }
     return *std::max_element(column_sums, column_sums + n);
   }
 
@@ -962,7 +967,7 @@ private:
   // Whether the last solve accepted by the bound of the condition number, which
   // condition_number() then replaces by the number itself.
   bool condition_pending_ = false;
-  bool whitened_ = false;   // whether that was solve_whitened, in the coordinates whitening_ x
+  bool whitened_ = false; // whether that was solve_whitened, in the coordinates whitening_ x
   Hessian whitening_ = Hessian::Identity();
   int size_ = 0;
   double condition_ = std::numeric_limits<double>::infinity();

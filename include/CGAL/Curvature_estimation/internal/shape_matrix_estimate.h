@@ -5,11 +5,11 @@
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_SHAPE_MATRIX_ESTIMATE_H
 
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
-#include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/internal/local_coordinates.h>
 #include <CGAL/Curvature_estimation/internal/shape_operator.h>
 #include <CGAL/Curvature_estimation/internal/surface_estimate.h>
 #include <CGAL/Curvature_estimation/internal/tangent_frame.h>
+#include <CGAL/Curvature_estimation/parameters.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -34,8 +34,8 @@ namespace internal {
 // else the product of the principal curvatures. Not estimable (NaN) when
 // anything is not finite.
 inline Surface_estimate shape_estimate_from_matrix(const Eigen::Matrix2d& shape, const Tangent_frame& tangents,
-                                                 const Eigen::Vector3d& normal, double scale,
-                                                 bool gaussian_from_determinant)
+                                                   const Eigen::Vector3d& normal, double scale,
+                                                   bool gaussian_from_determinant)
 {
   if (!shape.allFinite() || !(scale > 0))
     return Surface_estimate();
@@ -44,8 +44,8 @@ inline Surface_estimate shape_estimate_from_matrix(const Eigen::Matrix2d& shape,
   Eigen::Matrix2d vectors;
   symmetric_eigen<2>(symmetric, values, vectors);
   const double max_curvature = values[1] / scale, min_curvature = values[0] / scale;
-  const double gaussian = gaussian_from_determinant ? shape.determinant() / (scale * scale)
-                                                    : max_curvature * min_curvature;
+  const double gaussian =
+    gaussian_from_determinant ? shape.determinant() / (scale * scale) : max_curvature * min_curvature;
   const Eigen::Vector3d max_direction = tangents * vectors.col(1), min_direction = tangents * vectors.col(0);
   if (!std::isfinite(max_curvature) || !std::isfinite(min_curvature) || !std::isfinite(gaussian) ||
       !max_direction.allFinite() || !min_direction.allFinite())

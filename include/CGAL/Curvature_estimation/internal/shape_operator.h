@@ -33,10 +33,9 @@ struct Graph_curvature
 // symmetric form G^-1/2 C G^-1/2 / l, whose eigenvectors w give parameter
 // directions G^-1/2 w that are unit in the metric G.
 template <int N>
-Graph_curvature<N> graph_curvature(const Eigen::Matrix<double, N - 1, N - 1>& hessian,
-                                   const Eigen::Matrix<double, N - 1, 1>& gradient,
-                                   const Eigen::Matrix<double, N, N - 1>& tangents,
-                                   const Eigen::Matrix<double, N, 1>& normal)
+Graph_curvature<N>
+graph_curvature(const Eigen::Matrix<double, N - 1, N - 1>& hessian, const Eigen::Matrix<double, N - 1, 1>& gradient,
+                const Eigen::Matrix<double, N, N - 1>& tangents, const Eigen::Matrix<double, N, 1>& normal)
 {
   constexpr int D = N - 1;
   using Square = Eigen::Matrix<double, D, D>;
@@ -64,8 +63,7 @@ Graph_curvature<N> graph_curvature(const Eigen::Matrix<double, N - 1, N - 1>& he
   // curvatures in decreasing order.
   result.curvatures = -eigenvalues;
   const Square parameter_directions = inverse_sqrt_metric * eigenvectors;
-  result.directions = tangents * parameter_directions +
-                      normal * (gradient.transpose() * parameter_directions);
+  result.directions = tangents * parameter_directions + normal * (gradient.transpose() * parameter_directions);
   result.normal = (normal - tangents * gradient) / l;
   return result;
 }

@@ -5,9 +5,9 @@
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_SURFACE_ESTIMATE_H
 
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
-#include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/internal/for_each_vertex.h>
 #include <CGAL/Curvature_estimation/internal/local_coordinates.h>
+#include <CGAL/Curvature_estimation/parameters.h>
 
 #include <CGAL/number_utils.h>
 
@@ -89,11 +89,11 @@ void put_surface_estimate(const NamedParameters& np, VertexDescriptor v, const S
   using FT = typename GT::FT;
   using Vector_3 = typename GT::Vector_3;
   if constexpr (has_parameter<NamedParameters, internal_np::vertex_principal_curvatures_and_directions_map_t>())
-    put(get_parameter(np, internal_np::vertex_principal_curvatures_and_directions_map), v,
-        Principal_curvatures_and_directions<GT>(
-          FT(e.min_curvature), FT(e.max_curvature),
-          Vector_3(e.min_direction.x(), e.min_direction.y(), e.min_direction.z()),
-          Vector_3(e.max_direction.x(), e.max_direction.y(), e.max_direction.z())));
+    put(
+      get_parameter(np, internal_np::vertex_principal_curvatures_and_directions_map), v,
+      Principal_curvatures_and_directions<GT>(FT(e.min_curvature), FT(e.max_curvature),
+                                              Vector_3(e.min_direction.x(), e.min_direction.y(), e.min_direction.z()),
+                                              Vector_3(e.max_direction.x(), e.max_direction.y(), e.max_direction.z())));
   if constexpr (has_parameter<NamedParameters, internal_np::vertex_mean_curvature_map_t>())
     put(get_parameter(np, internal_np::vertex_mean_curvature_map), v, FT(0.5 * (e.max_curvature + e.min_curvature)));
   if constexpr (has_parameter<NamedParameters, internal_np::vertex_Gaussian_curvature_map_t>())

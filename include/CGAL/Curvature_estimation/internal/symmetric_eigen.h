@@ -39,14 +39,14 @@ void symmetric_eigen(const Eigen::Matrix<double, D, D>& m, Eigen::Matrix<double,
     const double a = m(0, 0), b = m(0, 1), c = m(1, 1);
     const double mean = 0.5 * (a + c);
     const double half_difference = 0.5 * (a - c);
-    const double radius = std::sqrt(half_difference * half_difference + b * b);  // scaled curvatures: no overflow
+    const double radius = std::sqrt(half_difference * half_difference + b * b); // scaled curvatures: no overflow
     values << mean - radius, mean + radius;
     // An eigenvector of the larger eigenvalue: (b, l - a) or (l - c, b), whichever
     // is the better conditioned; the other is orthogonal.
     const double l = values[1];
     Eigen::Vector2d larger = std::abs(l - a) > std::abs(l - c) ? Eigen::Vector2d(b, l - a) : Eigen::Vector2d(l - c, b);
     const double length = larger.norm();
-    larger = length > 0 ? Eigen::Vector2d(larger / length) : Eigen::Vector2d(1, 0);  // umbilic: any frame
+    larger = length > 0 ? Eigen::Vector2d(larger / length) : Eigen::Vector2d(1, 0); // umbilic: any frame
     vectors.col(1) = larger;
     vectors.col(0) = Eigen::Vector2d(-larger.y(), larger.x());
   } else {
@@ -96,8 +96,8 @@ inline int longest_of_three(const Eigen::Vector3d (&vectors)[3])
 inline Eigen::Vector3d smallest_eigenvector(const Eigen::Matrix3d& a)
 {
   const double c2 = a.trace();
-  const double c1 = a(0, 0) * a(1, 1) - a(0, 1) * a(0, 1) + a(0, 0) * a(2, 2) - a(0, 2) * a(0, 2) +
-                    a(1, 1) * a(2, 2) - a(1, 2) * a(1, 2);
+  const double c1 = a(0, 0) * a(1, 1) - a(0, 1) * a(0, 1) + a(0, 0) * a(2, 2) - a(0, 2) * a(0, 2) + a(1, 1) * a(2, 2) -
+                    a(1, 2) * a(1, 2);
   const double c0 = a.determinant();
   double l = 0;
   // c1 >= l2 l3 >= l2 c2 / 3: where it is below 1e-12 c2^2, A is of rank 1 or 0
@@ -105,9 +105,9 @@ inline Eigen::Vector3d smallest_eigenvector(const Eigen::Matrix3d& a)
   if (c1 > 1e-12 * c2 * c2)
     for (int iteration = 0; iteration < 100; ++iteration) {
       const double p = c0 - l * (c1 - l * (c2 - l));
-      const double slope = c1 - l * (2 * c2 - 3 * l);  // -p'(l), positive below l1
+      const double slope = c1 - l * (2 * c2 - 3 * l); // -p'(l), positive below l1
       const double step = p / slope;
-      if (!(step > 1e-17 * c2))  // converged, or past l1 by rounding
+      if (!(step > 1e-17 * c2)) // converged, or past l1 by rounding
         break;
       l += step;
     }
@@ -159,7 +159,7 @@ Eigen::Matrix<double, N, 1> least_squares_hyperplane_normal(const Eigen::Matrix<
         const double theta = 0.5 * (scatter(q, q) - scatter(p, p)) / scatter(p, q);
         const double t = (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1));
         const double c = 1 / std::sqrt(t * t + 1), s = t * c;
-        for (int k = 0; k < N; ++k) {  // scatter <- J^T scatter J, vectors <- vectors J
+        for (int k = 0; k < N; ++k) { // scatter <- J^T scatter J, vectors <- vectors J
           const double a = scatter(k, p), b = scatter(k, q);
           scatter(k, p) = c * a - s * b;
           scatter(k, q) = s * a + c * b;

@@ -26,9 +26,9 @@ namespace internal {
 struct Hypersurface_estimate
 {
   Estimation_status status = Estimation_status::not_estimable;
-  Eigen::Vector3d curvatures = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());  // decreasing
+  Eigen::Vector3d curvatures = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()); // decreasing
   Eigen::Matrix<double, 4, 3> directions =
-    Eigen::Matrix<double, 4, 3>::Constant(std::numeric_limits<double>::quiet_NaN());  // column i for curvature i
+    Eigen::Matrix<double, 4, 3>::Constant(std::numeric_limits<double>::quiet_NaN()); // column i for curvature i
   Eigen::Vector4d normal = Eigen::Vector4d::Constant(std::numeric_limits<double>::quiet_NaN());
 };
 
@@ -61,7 +61,8 @@ public:
   using Estimate = Hypersurface_estimate;
 
   Tetrahedral_platelet(const Stars& stars, const std::vector<Eigen::Vector4d>& points)
-    : stars_(&stars), points_(&points)
+      : stars_(&stars)
+      , points_(&points)
   {}
 
   const Eigen::Vector4d& point(Vertex v) const { return (*points_)[v]; }
@@ -92,9 +93,9 @@ public:
     for (std::size_t k = stars_->cell_offsets[v]; k < stars_->cell_offsets[v + 1]; ++k) {
       const auto& cell = stars_->cells[stars_->incident_cells[k]];
       const Eigen::Vector4d a = (point(cell[0]) - center) / scale;
-      const Eigen::Vector4d n = cross_product_4((point(cell[1]) - center) / scale - a,
-                                                (point(cell[2]) - center) / scale - a,
-                                                (point(cell[3]) - center) / scale - a);
+      const Eigen::Vector4d n =
+        cross_product_4((point(cell[1]) - center) / scale - a, (point(cell[2]) - center) / scale - a,
+                        (point(cell[3]) - center) / scale - a);
       if (n.allFinite())
         sum += n;
     }
@@ -124,7 +125,7 @@ class Tetrahedral_platelet_fitter : public Platelet_fit_core<Tetrahedral_platele
 public:
   Tetrahedral_platelet_fitter(const Stars& stars, const std::vector<Eigen::Vector4d>& points,
                               const Platelet_fit_settings& settings)
-    : Platelet_fit_core<Tetrahedral_platelet<Stars>>(Tetrahedral_platelet<Stars>(stars, points), settings)
+      : Platelet_fit_core<Tetrahedral_platelet<Stars>>(Tetrahedral_platelet<Stars>(stars, points), settings)
   {}
 };
 
