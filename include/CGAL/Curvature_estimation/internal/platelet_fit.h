@@ -244,6 +244,7 @@ private:
   bool gather(Vertex v)
   {
     offsets_.clear();
+    exhausted_ = false;
     center_ = neighborhood_.point(v);
     if (!all_finite(center_))
       return false;
@@ -350,15 +351,16 @@ private:
 
   int start_rings() const { return on_border_ ? settings_.boundary_rings : settings_.rings; }
 
-  // Gathers rings up to `rings`; false when the component has fewer.
+  // Gathers rings up to `rings`; false when the component has fewer, on every
+  // call (the collector counts the empty ring it met last).
   bool reach(int rings)
   {
-    while (neighborhood_.rings() < rings) {
-      if (!neighborhood_.extend())
-        return false;
-      append_offsets();
+    while (!exhausted_ && neighborhood_.rings() < rings) {
+      exhausted_ = !neighborhood_.extend();
+      if (!exhausted_)
+        append_offsets();
     }
-    return true;
+    return exhausted_ ? rings < neighborhood_.rings() : true;
   }
 
   // The scaled offsets of the vertices gathered since the last call, and whether
@@ -672,7 +674,8 @@ private:
   double scale_ = 1;
   double inverse_scale_ = 1; // 1 / scale_, or 0 where that is not a normal number
   bool on_border_ = false;
-  bool whitened_ = false; // whether test (b) accepted a fit since gather(v)
+  bool exhausted_ = false; // whether the rings met an empty one
+  bool whitened_ = false;  // whether test (b) accepted a fit since gather(v)
   // Where the normal fit needed test (b), the curvature fit starts on the rings
   // that gave the normal (the widest; the narrower ones failed test (a) for the
   // normal). 0: it starts on the settings' rings.
