@@ -44,7 +44,7 @@
 #include "noisy_meshes.h"
 #include "test_surfaces.h"
 
-#include <CGAL/Curvature_estimation/internal/neighborhood.h>
+#include <CGAL/Curvature_estimation/internal/rings.h>
 
 #include <algorithm>
 #include <chrono>

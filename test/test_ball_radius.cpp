@@ -7,7 +7,7 @@
 // edges converges as the mesh is refined.
 #include <CGAL/Curvature_estimation/chen_schmitt.h>
 #include <CGAL/Curvature_estimation/gauss_map.h>
-#include <CGAL/Curvature_estimation/internal/neighborhood.h>
+#include <CGAL/Curvature_estimation/internal/rings.h>
 #include <CGAL/Curvature_estimation/jet_fitting.h>
 #include <CGAL/Curvature_estimation/mean_edge_length.h>
 #include <CGAL/Curvature_estimation/paraboloid_fitting.h>

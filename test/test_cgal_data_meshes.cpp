@@ -34,7 +34,7 @@
 // Release builds only (16 s in one, sequential); skipped with a message where
 // the archive is absent.
 #include <CGAL/Curvature_estimation.h>
-#include <CGAL/Curvature_estimation/internal/face_graph_platelet.h>
+#include <CGAL/Curvature_estimation/internal/face_graph_neighborhood.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
@@ -203,13 +203,13 @@ const std::vector<Named_estimator>& estimators()
 // the first-order fallback: not_estimable or fallback without test (b).
 std::vector<char> refused_before(const Mesh& mesh)
 {
-  CEI::Platelet_fit_settings settings;
+  CEI::Fit_settings settings;
   settings.whitened_conditioning = false;
   const auto vpm = get(CGAL::vertex_point, mesh);
-  CEI::Platelet_fitter<Mesh, decltype(vpm)> fitter(mesh, vpm, settings);
+  CEI::Surface_fitter<Mesh, decltype(vpm)> fitter(mesh, vpm, settings);
   std::vector<char> refused;
   for (Vertex v : vertices(mesh)) {
-    const Status status = fitter.fit(v, CE::Vertex_normal_method::quadric_fit).status;
+    const Status status = fitter.fit(v, CE::Vertex_normal_method::quadric_fit).estimate.status;
     refused.push_back(status == Status::not_estimable || status == Status::fallback);
   }
   return refused;
@@ -274,7 +274,7 @@ TEST(CGAL_data_meshes, EveryEstimatorWithItsDefaults)
     const auto vpm = get(CGAL::vertex_point, mesh);
     CEI::Jet_fitter<Mesh, decltype(vpm)> reference(mesh, vpm, 4, 2, 3, 6, 1e3,
                                                    0); // jet_degree(4).neighborhood_rings(3)
-    CEI::Platelet_fitter<Mesh, decltype(vpm)> hamann(mesh, vpm, CEI::Platelet_fit_settings());
+    CEI::Surface_fitter<Mesh, decltype(vpm)> hamann(mesh, vpm, CEI::Fit_settings());
     for (Vertex v : vertices(mesh)) {
       const std::size_t i = std::size_t(v);
       if (!counted[i] || !before[i] || ours.status[i] == Status::not_estimable)
@@ -288,7 +288,7 @@ TEST(CGAL_data_meshes, EveryEstimatorWithItsDefaults)
       jet_errors.push_back(std::abs(jet.mean[i] - h_ref));
       if (ours.status[i] != Status::fallback)
         continue;
-      const CEI::Surface_estimate h = hamann.fit(v, CE::Vertex_normal_method::quadric_fit);
+      const CEI::Surface_estimate h = hamann.fit(v, CE::Vertex_normal_method::quadric_fit).estimate;
       if (h.status != Status::not_estimable) {
         border_errors.push_back(our_errors.back());
         hamann_errors.push_back(std::abs(0.5 * (h.max_curvature + h.min_curvature) - h_ref));

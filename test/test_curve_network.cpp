@@ -653,6 +653,18 @@ TEST(Curve_network, FallbackExactlyWhereTheCurvesAreNoMeshLines)
   }
 }
 
+// use_fallbacks(false): the vertices without a curve network, or whose curves are
+// no mesh lines, are not estimable; the others unchanged to the bit.
+TEST(Curve_network, WithoutFallbacksTheirVerticesAreNotEstimable)
+{
+  const ce_test::Graph_function f = ce_test::hamann_table1_functions()[4];
+  const Mesh mesh = ce_test::to_mesh<Mesh>(ce_test::jittered_grid_graph_soup(f, 21, -0.5, 0.5, 0.15, 7));
+  const ce_test::Fallback_counts counts =
+    ce_test::compare_without_fallbacks(estimate(mesh), estimate(mesh, params::use_fallbacks(false)));
+  EXPECT_GT(counts.not_estimable, 0u);
+  EXPECT_EQ(counts.own, 0u);
+}
+
 TEST(Curve_network, BadInputAndParameters)
 {
   auto [mesh, isolated, broken] = ce_test::grid_with_isolated_and_nan_vertex<Mesh>();

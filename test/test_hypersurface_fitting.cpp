@@ -352,6 +352,30 @@ TEST(Hypersurface_paraboloid_fitting, FitDegreeThreeConvergesAtSecondOrderOnJitt
   }
 }
 
+// use_fallbacks(false): the vertices where the fit of degree 3 is refused (the one-sided
+// corners of the grid), which the fit of degree 2 serves by default, are not estimable; the
+// others are unchanged, to the bit.
+TEST(Hypersurface_paraboloid_fitting, WithoutFallbacksTheirVerticesAreNotEstimable)
+{
+  const Grid g = jittered_grid(9, table_functions()[5], 0.3 * 2.0 / 8);
+  const Result with = run(g.mesh, CE::parameters::fit_degree(3));
+  const Result without = run(g.mesh, CE::parameters::fit_degree(3).use_fallbacks(false));
+  std::size_t fallbacks = 0;
+  for (std::size_t v = 0; v < with.status.size(); ++v) {
+    SCOPED_TRACE(v);
+    if (with.status[v] == Status::fallback) {
+      ++fallbacks;
+      EXPECT_EQ(without.status[v], Status::not_estimable);
+      EXPECT_TRUE(std::isnan(without.H[v]));
+      continue;
+    }
+    EXPECT_EQ(with.status[v], without.status[v]);
+    EXPECT_EQ(with.H[v], without.H[v]);
+    EXPECT_EQ(with.K[v], without.K[v]);
+  }
+  EXPECT_GT(fallbacks, 0u);
+}
+
 // ball_radius: the fit with a constant term over the part of the complex in the ball of R^4 that
 // is joined to the vertex inside it (the same core as for surfaces). A noisy scalar field (Gaussian
 // noise of 5% of the grid step on W, on a grid jittered by 0.3 of the step): the interior H RMS

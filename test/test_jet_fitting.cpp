@@ -167,6 +167,17 @@ TEST(Jet_fitting, WhereCgalsFitIsIllConditionedOnEveryRingItFallsBackToTheParabo
   EXPECT_GT(fallbacks, 0u);
 }
 
+// use_fallbacks(false): the vertices the paraboloid fit served are not estimable,
+// the others unchanged to the bit.
+TEST(Jet_fitting, WithoutFallbacksTheirVerticesAreNotEstimable)
+{
+  const Mesh mesh = ce_test::to_mesh<Mesh>(ce_test::pipe_soup(0.17, 0.31, 1.0, 12));
+  const ce_test::Fallback_counts counts = ce_test::compare_without_fallbacks(
+    estimate(mesh, params::default_values()), estimate(mesh, params::use_fallbacks(false)));
+  EXPECT_GT(counts.not_estimable, 0u);
+  EXPECT_EQ(counts.own, 0u);
+}
+
 #ifdef CGAL_LINKED_WITH_TBB
 TEST(Jet_fitting, SequentialAndParallelAreIdentical)
 {

@@ -2,7 +2,7 @@
 // Tests of the numerical core shared by the paraboloid-fitting estimators, on
 // exact inputs and without any mesh:
 //   internal/tangent_frame.h   tangent_basis<N>
-//   internal/quadric_fit.h     Taylor_fit<D, FirstOrder, LastOrder>, both conditioning tests,
+//   internal/taylor_fit/taylor_fit.h     Taylor_fit<D, FirstOrder, LastOrder>, both conditioning tests,
 //                              solve_again, subtract_curvature_quartic, curvature_quartic
 //   internal/shape_operator.h  graph_curvature<N>
 //
@@ -11,7 +11,7 @@
 // shape operator of a graph, an independent long-double condition number), never
 // from the code under test. Random numbers come from the raw output of
 // std::mt19937 with fixed seeds, so the inputs are the same on every platform.
-#include <CGAL/Curvature_estimation/internal/quadric_fit.h>
+#include <CGAL/Curvature_estimation/internal/taylor_fit/taylor_fit.h>
 #include <CGAL/Curvature_estimation/internal/shape_operator.h>
 #include <CGAL/Curvature_estimation/internal/tangent_frame.h>
 

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The k-rings and balls of internal/neighborhood.h read from a Vertex_adjacency are those of
+// The k-rings and balls of internal/rings.h read from a Vertex_adjacency are those of
 // halfedge circulation, vertex for vertex and in the same order (the fits sum their samples in that
 // order, so that their estimates stay the same to the bit): on a Delaunay mesh with a border, after
 // a vertex is removed (indices with a hole, a face that is not a triangle) and with an isolated
 // vertex.
-#include <CGAL/Curvature_estimation/internal/neighborhood.h>
+#include <CGAL/Curvature_estimation/internal/rings.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>

@@ -3,7 +3,7 @@
 // convergence and sign on closed surfaces, invariances, mesh-type independence,
 // concurrency, irregular meshes and bad input.
 #include <CGAL/Curvature_estimation/gauss_map.h>
-#include <CGAL/Curvature_estimation/internal/face_graph_platelet.h>
+#include <CGAL/Curvature_estimation/internal/face_graph_neighborhood.h>
 #include <CGAL/Curvature_estimation/jet_fitting.h>
 #include <CGAL/Curvature_estimation/paraboloid_fitting.h>
 
@@ -421,6 +421,30 @@ TEST(Paraboloid_fitting, WhereNoRingDeterminesTheFitTheDefaultFallsBackToJetFitt
     EXPECT_NE(paper.status[i], Estimation_status::fallback) << i;
 }
 
+// use_fallbacks(false): where no ring determines the fit (the pipe of the test above)
+// the vertices are not estimable; at the boundary vertices of thin triangles where
+// only the whitened test accepts Hamann's fit (the test below), Hamann's estimate
+// stays; every other vertex is unchanged, to the bit. The same at fit_degree 4,
+// whose fallback to degree 2 is off too.
+TEST(Paraboloid_fitting, WithoutFallbacksAVertexHasItsOwnEstimateOrNone)
+{
+  const Mesh pipe = ce_test::to_mesh<Mesh>(ce_test::pipe_soup(0.17, 0.31, 1.0, 12));
+  ce_test::Fallback_counts counts =
+    ce_test::compare_without_fallbacks(estimate(pipe), estimate(pipe, params::use_fallbacks(false)));
+  EXPECT_EQ(counts.not_estimable, 48u);
+  EXPECT_EQ(counts.own, 0u);
+
+  const ce_test::Graph_function g = ce_test::hamann_table1_functions()[1];
+  const Mesh thin = ce_test::to_mesh<Mesh>(ce_test::rectangle_grid_graph_soup(g, 21, -1, 1, -0.2, 0.2));
+  counts = ce_test::compare_without_fallbacks(estimate(thin), estimate(thin, params::use_fallbacks(false)));
+  EXPECT_EQ(counts.not_estimable, 0u);
+  EXPECT_GE(counts.own, 7u);
+
+  counts = ce_test::compare_without_fallbacks(estimate(pipe, params::fit_degree(4)),
+                                              estimate(pipe, params::fit_degree(4).use_fallbacks(false)));
+  EXPECT_EQ(counts.not_estimable, 48u);
+}
+
 // At the boundary vertices of grids of thin triangles (aspect ratios 10:3 and 5:1),
 // only the whitened test accepts Hamann's fit or its normal's. Hamann's fit has no
 // linear terms, and the tilt of the normal that the one-sided stencil leaves
@@ -441,11 +465,11 @@ TEST(Paraboloid_fitting, AtBoundaryVerticesThatOnlyTheWhitenedTestAcceptsTheDefa
       const auto exact = ce_test::graph_curvatures(g, soup);
       const Estimates ours = estimate(mesh);
       const auto vpm = get(CGAL::vertex_point, mesh);
-      CE::internal::Platelet_fitter<Mesh, decltype(vpm)> hamann(mesh, vpm, CE::internal::Platelet_fit_settings());
+      CE::internal::Surface_fitter<Mesh, decltype(vpm)> hamann(mesh, vpm, CE::internal::Fit_settings());
       std::vector<double> our_errors, hamann_errors;
       std::size_t i = 0;
       for (Mesh::Vertex_index v : vertices(mesh)) {
-        const CE::internal::Surface_estimate h = hamann.fit(v, CE::Vertex_normal_method::quadric_fit);
+        const CE::internal::Surface_estimate h = hamann.fit(v, CE::Vertex_normal_method::quadric_fit).estimate;
         if (ours.status[i] == Estimation_status::fallback && h.status != Estimation_status::not_estimable) {
           EXPECT_TRUE(CGAL::is_border(v, mesh)) << i;
           our_errors.push_back(std::abs(ours.mean[i] - exact[i].H));

@@ -4,7 +4,7 @@
 #include "estimation_settings.h"
 
 #include <CGAL/Curvature_estimation.h>
-#include <CGAL/Curvature_estimation/internal/neighborhood.h>
+#include <CGAL/Curvature_estimation/internal/rings.h>
 #include <CGAL/Curvature_estimation/mean_edge_length.h>
 
 #include <algorithm>

@@ -7,7 +7,7 @@
 #include "tool_error.h"
 
 #include <CGAL/Curvature_estimation/hypersurface_paraboloid_fitting.h>
-#include <CGAL/Curvature_estimation/internal/neighborhood.h>
+#include <CGAL/Curvature_estimation/internal/rings.h>
 #include <CGAL/property_map.h>
 
 #include <Eigen/Core>

@@ -8,6 +8,9 @@
 
 #include "test_surfaces.h"
 
+#include <gtest/gtest.h>
+
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -93,6 +96,42 @@ auto exact_normal_map(Mesh& mesh, const std::vector<Exact_curvature>& exact)
     normals[v] = typename Kernel::Vector_3(n.x(), n.y(), n.z());
   }
   return normals;
+}
+
+// The same run without and with fallbacks: at a vertex that a fallback served
+// (`with` fallback) `without` has the method's own estimate or none; everywhere
+// else the two are the same to the bit. Returns the number of vertices of each
+// kind: fallback vertices left not_estimable, and those with an own estimate.
+struct Fallback_counts
+{
+  std::size_t not_estimable = 0, own = 0;
+};
+
+template <typename Kernel>
+Fallback_counts compare_without_fallbacks(const Estimates<Kernel>& with, const Estimates<Kernel>& without)
+{
+  using Status = CGAL::Curvature_estimation::Estimation_status;
+  Fallback_counts counts;
+  for (std::size_t i = 0; i < with.status.size(); ++i) {
+    SCOPED_TRACE(i);
+    if (with.status[i] == Status::fallback) {
+      EXPECT_NE(without.status[i], Status::fallback);
+      if (without.status[i] == Status::not_estimable) {
+        EXPECT_TRUE(std::isnan(without.mean[i]));
+        ++counts.not_estimable;
+      } else
+        ++counts.own;
+      continue;
+    }
+    EXPECT_EQ(with.status[i], without.status[i]);
+    if (with.status[i] == Status::not_estimable)
+      continue;
+    EXPECT_EQ(with.mean[i], without.mean[i]);
+    EXPECT_EQ(with.gaussian[i], without.gaussian[i]);
+    EXPECT_EQ(with.principal[i].max_curvature, without.principal[i].max_curvature);
+    EXPECT_EQ(with.principal[i].min_curvature, without.principal[i].min_curvature);
+  }
+  return counts;
 }
 
 } // namespace ce_test

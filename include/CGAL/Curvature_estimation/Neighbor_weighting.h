@@ -8,15 +8,10 @@ namespace CGAL {
 namespace Curvature_estimation {
 
 /// \ingroup PkgCurvatureEstimationRef
-/// The weights of the neighbors or faces around a vertex p. In `taubin_curvatures()` each
-/// neighbor q joined to p by an edge is weighted by the faces on the edge (p, q)
-/// (two, or one at the boundary), the weights normalised to sum 1 (`area` or
-/// `centroid`). In `gauss_map_curvatures()`, when given, they weight the per-face
-/// Jacobians of the normal (the paper's differential; `area` or `centroid`). In
-/// `chen_schmitt_curvatures()`, `uniform` selects the paper's unweighted fit over
-/// the 1-ring. In `paraboloid_fitting_curvatures()` and
-/// `hypersurface_paraboloid_fitting_curvatures()` with a `ball_radius`, `uniform` (the
-/// default) or `smooth`. A function given a value it does not list throws `std::invalid_argument`.
+/// The weights of the neighbors or faces around a vertex p: of the edges' faces in
+/// `taubin_curvatures()` and of the per-face Jacobians in `gauss_map_curvatures()` (`area`,
+/// `centroid`), of Chen and Schmitt's fit (`uniform`), of the fits over a ball (`uniform`,
+/// `smooth`). A function given a value it does not list throws `std::invalid_argument`.
 enum class Neighbor_weighting : unsigned char
 {
   /// The areas of the faces (Taubin 1995).

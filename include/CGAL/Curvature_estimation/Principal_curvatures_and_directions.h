@@ -64,14 +64,11 @@ struct Principal_curvatures_and_directions
 /// `vertex_estimation_status_map`.
 enum class Estimation_status : unsigned char
 {
-  ok,            ///< estimated from the neighborhood asked for (by default the 1-ring)
-  widened,       ///< estimated from a neighborhood wider than the 1-ring, because the 1-ring
-                 ///< was too small or ill-conditioned (or because wider rings were asked for)
+  ok,            ///< estimated from the neighborhood asked for
+  widened,       ///< estimated from a wider neighborhood than asked for (a fit refused there)
   not_estimable, ///< no estimate: isolated vertex, degenerate neighborhood, invalid input; values are NaN
-  fallback       ///< estimated by the estimator's documented fallback method, because its own method
-                 ///< does not apply at the vertex (`curve_network_curvatures()`: no curve network there, or
-                 ///< its curves are no mesh lines; the paraboloid fits with `fit_degree` 3 or 4: that fit is not
-                 ///< determined, and the degree-2 fit serves)
+  fallback       ///< estimated by one of the estimator's fallbacks, its own method finding none (see the
+                 ///< User Manual, Fallbacks)
 };
 
 /// The name of a status: `ok`, `widened`, `not_estimable` or `fallback`.

@@ -7,21 +7,16 @@ namespace CGAL {
 namespace Curvature_estimation {
 
 /// \ingroup PkgCurvatureEstimationRef
-/// How a normal is estimated at a vertex of a surface mesh.
-///
-/// The three face-averaging methods return the normalised weighted sum
-/// \f$ \sum_f w_f\, n_f \f$ of the unit normals \f$ n_f \f$ of the faces incident to the
-/// vertex; they differ by the weights \f$ w_f \f$. On a mesh inscribed in a smooth surface
-/// their error is in general of first order in the edge length (second order only on
-/// symmetric stars), which is why curvature estimators default to `quadric_fit`.
+/// How a normal is estimated at a vertex of a surface mesh: fitted, or the normalised
+/// weighted sum \f$ \sum_f w_f\, n_f \f$ of the unit normals of the faces incident to the
+/// vertex (first order in general; see the User Manual, "Vertex normals").
 enum class Vertex_normal_method : unsigned char
 {
   /// The area-weighted normal corrected by the gradient of a local Taylor fit: a
   /// second-order estimate, also at boundary vertices. The default of
   /// `estimate_vertex_normals()` and of the curvature estimators that need normals.
   quadric_fit,
-  /// Weights are the face areas: the normalised sum of the (unnormalised) face normal
-  /// vectors.
+  /// Weights are the face areas.
   area_weighted,
   /// Weights are the interior angles of the faces at the vertex (Thürmer and Wüthrich 1998).
   /// At a reflex vertex of a non-convex polygonal face the angle is larger than \f$ \pi \f$.

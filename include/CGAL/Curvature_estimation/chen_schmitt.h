@@ -56,55 +56,28 @@ inline bool chen_schmitt_shape_matrix(const std::vector<Normal_curvature_sample>
 
 /// \ingroup PkgCurvatureEstimationRef
 ///
-/// Estimates principal curvatures and directions, mean and Gaussian curvature at
-/// every vertex of a surface mesh by Chen and Schmitt's method (Chen and Schmitt
-/// 1992, as reviewed by Chen, Wu and Chi 2005, section 3.1): the normal curvatures
-/// `k_i = 2 <p - q_i, N> / |q_i - p|^2` along the unit
-/// tangents `t_i = (costheta_i, sintheta_i)` towards neighbors `q_i` of the
-/// vertex p are fitted by least squares with Euler's formula
-/// `k(theta) = C_1 cos^2theta + C_2 costheta sintheta + C_3 sin^2theta`;
-/// the principal curvatures and directions are the eigenvalues and eigenvectors
-/// of `[[C_1, C_2/2], [C_2/2, C_3]]` (eqs. 12-13). The angles are measured
-/// in a tangent frame of the normal; the fit does not depend on which (the paper
-/// measures them from the first edge).
+/// estimates principal curvatures and directions, mean and Gaussian curvature at every vertex of `g` by
+/// Chen and Schmitt's method (Chen and Schmitt 1992, as reviewed by Chen, Wu and Chi 2005, section 3.1):
+/// the normal curvatures k_i = 2 <p - q_i, N> / |q_i - p|^2 along the unit tangents towards the neighbors
+/// q_i of the vertex p are fitted by least squares with Euler's formula
+/// k(theta) = C_1 cos^2 theta + C_2 cos theta sin theta + C_3 sin^2 theta, and the principal curvatures and
+/// directions are the eigenvalues and eigenvectors of [[C_1, C_2/2], [C_2/2, C_3]]. By default the samples
+/// are those of the 2-ring, weighted by |q_i - p|^2; `neighbor_weighting(Neighbor_weighting::uniform)` is the
+/// paper's unweighted fit over the 1-ring, which diverges on meshes with slivers (see the User Manual,
+/// "Gauss map and the baselines"). A baseline. Normals: as `taubin_curvatures()`.
 ///
-/// The paper's fit, with `neighbor_weighting(Neighbor_weighting::uniform)`, is
-/// unweighted over the neighbors joined to p by an edge (as in `taubin_curvatures()`).
-/// It diverges on meshes with slivers or tiny clusters of vertices (marching cubes
-/// or tetrahedra): a sample's error, the normal's error and the cubic remainder,
-/// is divided by `|q_i - p|`, and some 1-rings are far smaller than the edge length h.
-/// The default fits the samples of every vertex of the 2-ring with weights
-/// `|q_i - p|^2`: it converges at first order on such meshes (measured on
-/// marching tetrahedra and Delaunay triangulations of random points) and at second
-/// order on regular grids, with errors there 2 to 4 times the paper fit's.
-/// Normals come from `vertex_normal_map` when given, else from `vertex_normal_method`
-/// (default `Vertex_normal_method::quadric_fit`, the package's second-order normal).
+/// Conventions: as `paraboloid_fitting_curvatures()`. A vertex with no normal, or whose samples have fewer
+/// than three directions distinct modulo pi, is `not_estimable` (NaN). Only the outputs whose maps are
+/// passed are written.
 ///
-/// **Conventions.** A sphere with outward normals has `max_curvature == min_curvature == 1/r`;
-/// `max_curvature >= min_curvature`; directions are unit, tangent and orthogonal;
-/// K is `max_curvature * min_curvature`. A vertex with no normal, or whose samples
-/// have fewer than three directions distinct modulo pi (for instance, with the
-/// paper's fit, a corner of a grid), gets NaN in every output and the status
-/// `Estimation_status::not_estimable`.
-///
-/// Only the outputs whose maps are passed are written; passing none does nothing.
-///
-/// \ceConcurrencyTag
-/// \tparam FaceGraph a model of `FaceGraph` (faces may be any polygons).
-/// \tparam NamedParameters a sequence of named parameters, built with the functions of
-/// `CGAL::Curvature_estimation::parameters`
-///
-/// \param g the mesh
-/// \param np an optional sequence of named parameters among the ones listed below
+/// \ceSurfaceEstimatorParameters
 ///
 /// \cgalNamedParamsBegin
 ///   \ceSurfaceInputParameters
 ///   \ceGivenNormalParameter
 ///   \ceQuadricFitNormalParameters
 ///   \cgalParamNBegin{neighbor_weighting}
-///     \cgalParamDescription{`Neighbor_weighting::uniform`: the paper's unweighted fit over the 1-ring (other values
-///                           are refused)}
-///     \cgalParamType{`CGAL::Curvature_estimation::Neighbor_weighting`}
+///     \cgalParamDescription{`uniform`: the paper's unweighted fit over the 1-ring (other values are refused)}
 ///     \cgalParamDefault{none: the fit over the 2-ring with weights `|q_i - p|^2`}
 ///   \cgalParamNEnd
 ///   \ceSurfaceOutputParameters{K = k1 k2, `ok` or `not_estimable`}
@@ -116,8 +89,6 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag, typename FaceGraph,
           typename NamedParameters = parameters::Default_named_parameters>
 void chen_schmitt_curvatures(const FaceGraph& g, const NamedParameters& np = parameters::default_values())
 {
-  // The paper's 1-ring; by default the 2-ring, so that a vertex whose 1-ring is a
-  // tiny cluster (marching-cubes meshes have them) still has samples of length about h.
   const bool uniform = internal::chen_schmitt_uniform(np);
   internal::normal_curvature_sample_curvatures<ConcurrencyTag>(
     g, np, "chen_schmitt_curvatures", uniform ? 1 : 2,

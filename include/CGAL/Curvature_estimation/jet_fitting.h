@@ -7,7 +7,8 @@
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
 #include <CGAL/Curvature_estimation/internal/face_average_normal.h>
-#include <CGAL/Curvature_estimation/internal/neighborhood.h>
+#include <CGAL/Curvature_estimation/internal/fallback_chain.h>
+#include <CGAL/Curvature_estimation/internal/rings.h>
 #include <CGAL/Curvature_estimation/internal/surface_estimate.h>
 #include <CGAL/Curvature_estimation/paraboloid_fitting.h>
 #include <CGAL/Curvature_estimation/parameters.h>
@@ -34,7 +35,8 @@ namespace CGAL {
 namespace Curvature_estimation {
 namespace internal {
 
-// One vertex's jet fit; one copy per thread holds the reusable point buffer.
+// CGAL's jet fit at one vertex with its fallback chain; one copy per thread
+// holds the reusable point buffer.
 template <typename FaceGraph, typename VertexPointMap>
 class Jet_fitter
 {
@@ -44,7 +46,7 @@ public:
   using Monge_fitting = CGAL::Monge_via_jet_fitting<Local_kernel>;
 
   Jet_fitter(const FaceGraph& g, VertexPointMap vpm, int jet_degree, int monge_degree, int rings, int max_rings,
-             double max_condition, double ball_radius)
+             double max_condition, double ball_radius, bool use_fallbacks = true)
       : g_(&g)
       , vpm_(vpm)
       , jet_degree_(jet_degree)
@@ -53,35 +55,28 @@ public:
       , max_rings_(max_rings)
       , max_condition_(max_condition)
       , ball_radius_(ball_radius)
-      , fallback_(g, vpm, Fit_parameters{Platelet_fit_settings(), Vertex_normal_method::quadric_fit})
+      , use_fallbacks_(use_fallbacks)
+      , paraboloid_(g, vpm, Fit_parameters{Fit_settings(), Vertex_normal_method::quadric_fit})
   {}
 
   // CGAL's fit normal.
   static constexpr bool uses_given_normals = false;
 
-  // CGAL's fit, or where it is ill-conditioned on every ring the paraboloid fit
-  // with its defaults (status fallback). CGAL's condition number is that of the
-  // fit in its own tangent coordinates, scaled by one length: a neighborhood of
-  // long thin triangles is ill-conditioned there, whatever its number of rings
-  // (1,648 of the 8,231 vertices of CGAL's blade.off). The paraboloid fit tests
-  // conditioning in coordinates whitened by the neighborhood's own second
-  // moments, which accept it. At those vertices of blade.off the paraboloid fit
-  // and the Gauss map, two independent estimates, differ by a median 0.51 in H;
-  // CGAL's fit accepted up to a condition number of 1e6 differs from them by 1.5
-  // and 2.3 (median |H| 1.8).
+  // The fallback chain: CGAL's fit; where it is ill-conditioned on every
+  // neighborhood, the paraboloid fit with its defaults and its own fallbacks,
+  // whose conditioning test accepts anisotropic neighborhoods.
   Surface_estimate estimate(vertex_descriptor v, const Eigen::Vector3d*)
   {
-    const Surface_estimate result = fit(v);
-    return result.status != Estimation_status::not_estimable ? result : as_fallback(fallback_.estimate(v, nullptr));
+    return estimate_with_fallbacks<Surface_estimate>(
+      use_fallbacks_, [&] { return accepted_or_refused(fit(v)); },
+      fallback(Tried_where::refused, [&] { return accepted_or_refused(paraboloid_.estimate(v, nullptr)); }));
   }
 
 private:
-  // The fit over the k-ring (the vertex first, as CGAL requires), from `rings_`
-  // rings on, widened until there are enough points for the jet's
-  // (d+1)(d+2)/2 coefficients (a precondition CGAL checks only in debug builds)
-  // and CGAL's condition number is at most `max_condition_`: on a few rows of a
-  // grid boundary the system is nearly singular and the jet is garbage.
-  // CGAL's fit estimates the normal itself.
+  // The fit over the rings (the vertex first, as CGAL requires), widened until
+  // there are enough points for the jet's coefficients (a precondition CGAL
+  // checks only in debug builds) and CGAL's condition number is at most
+  // `max_condition_`, or over the ball.
   Surface_estimate fit(vertex_descriptor v)
   {
     const Eigen::Vector3d center = point_in_double(vpm_, v);
@@ -164,110 +159,54 @@ private:
   int jet_degree_, monge_degree_, rings_, max_rings_;
   double max_condition_;
   double ball_radius_; // > 0: the ball's, instead of the rings
+  bool use_fallbacks_;
   Ring_collector<FaceGraph> collector_;
   std::vector<Local_kernel::Point_3> points_;
-  Paraboloid_estimator<FaceGraph, VertexPointMap> fallback_;
+  Paraboloid_estimator<FaceGraph, VertexPointMap> paraboloid_;
 };
 
 } // namespace internal
 
 /// \ingroup PkgCurvatureEstimationRef
 ///
-/// Estimates curvature with CGAL's jet fitting (`CGAL::Monge_via_jet_fitting`,
-/// Cazals and Pouget 2005) over the vertex's k-ring, with this package's outputs and
-/// conventions, so that it can be compared like for like with the other estimators.
+/// estimates curvature with CGAL's jet fitting (`CGAL::Monge_via_jet_fitting`, Cazals and Pouget 2005)
+/// over the vertex's rings or ball, with this package's outputs and conventions, for like-for-like
+/// comparisons. The fit starts on `neighborhood_rings` rings and is widened, up to
+/// `max_neighborhood_rings`, until the rings hold the jet's (d+1)(d+2)/2 points and CGAL's condition
+/// number is at most `max_condition_number` (status `widened` where it grew). With `ball_radius(r)` the
+/// neighborhood is the ball of `paraboloid_fitting_curvatures()`, grown as there. The Monge normal is
+/// oriented like the area-weighted vertex normal, and CGAL's curvatures are converted to this package's
+/// sign (a sphere with outward normals has curvature 1/r). Where the fit is refused on every
+/// neighborhood, the fallback is `paraboloid_fitting_curvatures()` with its defaults (status `fallback`);
+/// see the User Manual, "Jet fitting".
 ///
-/// The fit starts on `neighborhood_rings` rings and is widened, up to
-/// `max_neighborhood_rings`, until the k-ring has at least (d+1)(d+2)/2 points
-/// for the degree-d jet and CGAL's condition number is at most `max_condition_number`:
-/// enough points on few rows of a grid boundary still give condition numbers up to
-/// 1e17 and curvature errors of order 1. The Monge normal is oriented like the
-/// area-weighted vertex normal, and CGAL's curvatures (positive towards that normal)
-/// are converted to this package's convention (a sphere with outward normals has
-/// curvature 1/r). Where the fit is ill-conditioned on every k-ring up to
-/// `max_neighborhood_rings` (CGAL's condition number, in its own tangent coordinates
-/// scaled by one length, is large on neighborhoods of long thin triangles however
-/// wide), the estimate is that of `paraboloid_fitting_curvatures()` with its defaults,
-/// whose conditioning test accepts anisotropic neighborhoods, with the status
-/// `fallback`; a vertex that neither estimates is not estimable (NaN).
-///
-/// With `ball_radius(r)` the neighborhood is the ball of `paraboloid_fitting_curvatures()`
-/// (the part of the mesh inside the ball of radius r about the vertex, joined to it by
-/// edges inside the ball), grown as there until it holds twice the jet's coefficients
-/// and then, while CGAL's condition number exceeds `max_condition_number`, up to twice
-/// that radius (status `widened` where it grew): the same neighborhoods as the
-/// paraboloid fit's, for like-for-like comparisons at a scale.
-///
-/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (default), `CGAL::Parallel_tag` or
-///         `CGAL::Parallel_if_available_tag`. Sequential and parallel runs give
-///         identical results. In parallel the vertex point map is read from several
-///         threads; the property maps of `Surface_mesh` (and `Point_set_3`) are read and
-///         written by the worker threads, every other map by the calling thread only.
-/// \tparam FaceGraph a model of `FaceGraph`
-/// \tparam NamedParameters a sequence of named parameters, built with the functions of
-///         `CGAL::Curvature_estimation::parameters`
+/// \ceSurfaceEstimatorParameters
 ///
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{vertex_point_map}
-///     \cgalParamDescription{a property map associating points to the vertices of `g`}
-///     \cgalParamType{a model of `ReadablePropertyMap` with `%Point_3` as value type}
-///     \cgalParamDefault{`boost::get(CGAL::vertex_point, g)`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{geom_traits}
-///     \cgalParamDescription{an instance of a geometric traits class}
-///     \cgalParamType{a class model of `Kernel`}
-///     \cgalParamDefault{a \cgal Kernel deduced from the point type}
-///   \cgalParamNEnd
+///   \ceSurfaceInputParameters
 ///   \cgalParamNBegin{jet_degree}
-///     \cgalParamDescription{the degree d of the fitted jet}
-///     \cgalParamType{`int`, from 1 to 4}
+///     \cgalParamDescription{the degree d of the fitted jet, 1 to 4}
 ///     \cgalParamDefault{`2`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{monge_degree}
-///     \cgalParamDescription{the degree of the Monge form}
-///     \cgalParamType{`int`, from 2 to the jet degree}
+///     \cgalParamDescription{the degree of the Monge form, 2 to the jet degree}
 ///     \cgalParamDefault{`2`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{neighborhood_rings}
-///     \cgalParamDescription{the rings the fit starts with}
-///     \cgalParamType{`int`, at least 1}
+///     \cgalParamDescription{the rings the fit starts with, at least 1}
 ///     \cgalParamDefault{`1`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{max_neighborhood_rings}
-///     \cgalParamDescription{the widest neighborhood a fit is widened to}
-///     \cgalParamType{`int`, at least `neighborhood_rings`}
+///     \cgalParamDescription{the widest neighborhood a fit is widened to, at least `neighborhood_rings`}
 ///     \cgalParamDefault{`neighborhood_rings + 3`}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{ball_radius}
-///     \cgalParamDescription{the radius of the ball that is the neighborhood instead of the rings (see above)}
-///     \cgalParamType{`double`, positive, in the units of the mesh (see `mean_edge_length()`)}
-///     \cgalParamDefault{none: the rings}
-///   \cgalParamNEnd
+///   \ceBallRadiusParameter
 ///   \cgalParamNBegin{max_condition_number}
-///     \cgalParamDescription{fits whose condition number (as CGAL computes it) is larger are widened}
-///     \cgalParamType{`double`, greater than 1}
+///     \cgalParamDescription{fits whose condition number (as CGAL computes it) is larger are widened; above 1}
 ///     \cgalParamDefault{`1e3`}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{vertex_principal_curvatures_and_directions_map}
-///     \cgalParamDescription{output: principal curvatures and directions}
-///     \cgalParamType{a model of `WritablePropertyMap` with `Principal_curvatures_and_directions<GT>` as value type}
-///     \cgalParamDefault{not computed}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{vertex_mean_curvature_map}
-///     \cgalParamDescription{output: mean curvature}
-///     \cgalParamType{a model of `WritablePropertyMap` with `GT::FT` as value type}
-///     \cgalParamDefault{not computed}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{vertex_Gaussian_curvature_map}
-///     \cgalParamDescription{output: Gaussian curvature}
-///     \cgalParamType{a model of `WritablePropertyMap` with `GT::FT` as value type}
-///     \cgalParamDefault{not computed}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{vertex_estimation_status_map}
-///     \cgalParamDescription{output: `ok` on the starting rings, `widened` beyond, `fallback` (the paraboloid fit),
-///     `not_estimable`} \cgalParamType{a model of `WritablePropertyMap` with `Estimation_status` as value type}
-///     \cgalParamDefault{not computed}
-///   \cgalParamNEnd
+///   \ceUseFallbacksParameter
+///   \ceSurfaceOutputParameters{K = k1 k2, `ok`\, `widened`\, `fallback` or `not_estimable`}
 /// \cgalNamedParamsEnd
 ///
 /// \throws std::invalid_argument if a parameter is out of its range.
@@ -281,6 +220,7 @@ void jet_fitting_curvatures(const FaceGraph& g, const NamedParameters& np = para
   const int max_rings = internal::parameter_or(np, internal_np::max_neighborhood_rings, rings + 3);
   const double max_condition = internal::parameter_or(np, internal_np::max_condition_number, 1e3);
   const double ball_radius = internal::ball_radius_or_zero(np, "jet_fitting_curvatures");
+  const bool use_fallbacks = internal::parameter_or(np, internal_np::use_fallbacks, true);
   const std::string where = "jet_fitting_curvatures: ";
   if (jet_degree < 1 || jet_degree > 4 || monge_degree < 2 || monge_degree > jet_degree)
     throw std::invalid_argument(where + "needs 2 <= monge_degree <= jet_degree <= 4");
@@ -290,8 +230,8 @@ void jet_fitting_curvatures(const FaceGraph& g, const NamedParameters& np = para
     throw std::invalid_argument(where + "max_condition_number must be greater than 1");
 
   internal::estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
-    return internal::Jet_fitter<FaceGraph, std::decay_t<decltype(vpm)>>(g, vpm, jet_degree, monge_degree, rings,
-                                                                        max_rings, max_condition, ball_radius);
+    return internal::Jet_fitter<FaceGraph, std::decay_t<decltype(vpm)>>(
+      g, vpm, jet_degree, monge_degree, rings, max_rings, max_condition, ball_radius, use_fallbacks);
   });
 }
 

@@ -19,10 +19,8 @@ namespace Curvature_estimation {
 
 /// \ingroup PkgCurvatureEstimationRef
 ///
-/// The mean length of the edges of `g`, in double precision, over the edges whose
-/// length is finite; 0 where there is none. Multiplied by a number of edges it gives
-/// a `ball_radius` that means the same on a coarse and a fine mesh of one shape:
-/// `ball_radius(3 * mean_edge_length(g))` is "a radius of 3 edges".
+/// The mean length of the finite edges of `g` (0 where there is none), in double:
+/// `ball_radius(3 * mean_edge_length(g))` is "a radius of 3 edges" on any mesh.
 ///
 /// \tparam FaceGraph a model of `FaceGraph`
 /// \tparam NamedParameters a sequence of named parameters

@@ -1,15 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Named parameters of the curvature estimation package.
-//
-// CGAL 5.5 cannot be taught new member functions for chaining, so this package
-// has its own class deriving from CGAL::Named_function_parameters: CGAL's lookup
-// (get_parameter, choose_parameter, is_default_parameter, GetGeomTraits, ...)
-// accepts it because it is-a CGAL pack, and its members return the derived type
-// for this package's parameters and for the CGAL parameters the estimators read,
-// so that both kinds chain in any order. The tags live in this package's own
-// namespace; on CGAL 6, which defines four of them too, those four are CGAL's own
-// tags, so that one chain serves CGAL 6's interpolated corrected curvatures and
-// this package's estimators alike.
+// Named parameters of the curvature estimation package: a class deriving from
+// CGAL::Named_function_parameters whose chaining members also cover this
+// package's parameters, so that CGAL's lookup accepts it and both kinds chain in
+// any order (the manual's "CGAL 5.5 and CGAL 6" says why).
 #ifndef CGAL_CURVATURE_ESTIMATION_PARAMETERS_H
 #define CGAL_CURVATURE_ESTIMATION_PARAMETERS_H
 
@@ -46,7 +39,8 @@
   X(max_curve_irregularity_t, max_curve_irregularity)                                                                  \
   X(fit_degree_t, fit_degree)                                                                                          \
   X(jet_degree_t, jet_degree)                                                                                          \
-  X(monge_degree_t, monge_degree)
+  X(monge_degree_t, monge_degree)                                                                                      \
+  X(use_fallbacks_t, use_fallbacks)
 #define CGAL_CE_PACKAGE_PARAMETERS(X)                                                                                  \
   CGAL_CE_PARAMETERS_SHARED_WITH_CGAL_6(X)                                                                             \
   CGAL_CE_OWN_PARAMETERS(X)

@@ -54,49 +54,27 @@ inline bool taubin_shape_matrix(const std::vector<Normal_curvature_sample>& samp
 
 /// \ingroup PkgCurvatureEstimationRef
 ///
-/// Estimates principal curvatures and directions, mean and Gaussian curvature at
-/// every vertex of a surface mesh by Taubin's tensor of curvature (Taubin 1995,
-/// as reviewed by Chen, Wu and Chi 2005, section 3.2). For every neighbor
-/// `q_i` joined to the vertex p by an edge, `t_i` is the unit
-/// projection of `q_i - p` on the tangent plane and
-/// `k_i = 2 <p - q_i, N> / |q_i - p|^2` the curvature of the
-/// circle through p and `q_i` tangent to the plane (positive where
-/// `q_i` lies below it: the package's sign). The tensor
-/// `M = \sum_i w_i k_i t_i t_i^T` (weights of `neighbor_weighting`,
-/// summing to 1) has tangent eigenvalues `m_1 >= m_2`; then
-/// `k_1 = 3 m_1 - m_2`, `k_2 = 3 m_2 - m_1`, with the same eigenvectors.
+/// estimates principal curvatures and directions, mean and Gaussian curvature at every vertex of `g` by
+/// Taubin's tensor of curvature (Taubin 1995, as reviewed by Chen, Wu and Chi 2005, section 3.2): with t_i
+/// the unit projection of q_i - p on the tangent plane for each neighbor q_i joined to p by an edge, and
+/// k_i = 2 <p - q_i, N> / |q_i - p|^2, the tensor M = sum_i w_i k_i t_i t_i^T (weights of
+/// `neighbor_weighting`, summing to 1) has tangent eigenvalues m_1 >= m_2, and k_1 = 3 m_1 - m_2,
+/// k_2 = 3 m_2 - m_1 with the same eigenvectors. A baseline: it is not consistent on irregular meshes.
+/// Normals come from `vertex_normal_map` when given, else from `vertex_normal_method` (Taubin used the
+/// area-weighted normal, Chen, Wu and Chi the centroid-weighted one: pass them to reproduce their settings).
 ///
-/// A baseline: its curvature is exact only where the normal curvature samples
-/// cover the directions evenly, and it is not consistent on irregular meshes.
-/// Normals come from `vertex_normal_map` when given, else from
-/// `vertex_normal_method` (default `Vertex_normal_method::quadric_fit`, the
-/// package's second-order normal; Taubin used the area-weighted one, Chen and Wu
-/// the centroid-weighted one: pass them to reproduce their settings).
+/// Conventions: as `paraboloid_fitting_curvatures()`. A vertex with no normal, or whose neighbors'
+/// tangents do not span the tangent plane, is `not_estimable` (NaN). Only the outputs whose maps are
+/// passed are written.
 ///
-/// **Conventions.** A sphere with outward normals has `max_curvature == min_curvature == 1/r`;
-/// `max_curvature >= min_curvature`; directions are unit, tangent and orthogonal;
-/// K is `max_curvature * min_curvature`. A vertex with no normal, or whose
-/// neighbors' tangents do not span the tangent plane, gets NaN in every output
-/// and the status `Estimation_status::not_estimable`.
-///
-/// Only the outputs whose maps are passed are written; passing none does nothing.
-///
-/// \ceConcurrencyTag
-/// \tparam FaceGraph a model of `FaceGraph` (faces may be any polygons).
-/// \tparam NamedParameters a sequence of named parameters, built with the functions of
-/// `CGAL::Curvature_estimation::parameters`
-///
-/// \param g the mesh
-/// \param np an optional sequence of named parameters among the ones listed below
+/// \ceSurfaceEstimatorParameters
 ///
 /// \cgalNamedParamsBegin
 ///   \ceSurfaceInputParameters
 ///   \ceGivenNormalParameter
 ///   \ceQuadricFitNormalParameters
 ///   \cgalParamNBegin{neighbor_weighting}
-///     \cgalParamDescription{the weights of the neighbors: `Neighbor_weighting::area` or `Neighbor_weighting::centroid`
-///                           (the others are refused)}
-///     \cgalParamType{`CGAL::Curvature_estimation::Neighbor_weighting`}
+///     \cgalParamDescription{the weights of the neighbors: `area` or `centroid` (the others are refused)}
 ///     \cgalParamDefault{`Neighbor_weighting::area` (Taubin's)}
 ///   \cgalParamNEnd
 ///   \ceSurfaceOutputParameters{K = k1 k2, `ok` or `not_estimable`}

@@ -17,19 +17,14 @@ namespace CGAL {
 namespace Curvature_estimation {
 namespace internal {
 
-// The largest extrapolation order (points at +-h ... +-4h). Beyond it the
-// coefficients grow and rounding in double eats the gain (the paper's Fig. 3
-// already levels off at about 1e-16 relative).
+// The largest extrapolation order (points at +-h ... +-4h): beyond it rounding
+// eats the gain (the paper's Fig. 3 levels off at about 1e-16 relative).
 constexpr int max_extrapolation_order = 4;
 
-// What the estimate says about the curve at the middle point:
-//   curvature          kappa >= 0,
-//   tangent            unit, oriented from the points before to the points after,
-//   principal_normal   unit, orthogonal to the tangent, towards the centre of
-//                      curvature; the zero vector where kappa == 0 (straight),
-//   curvature_vector   kappa * principal_normal (what Meusnier's theorem reads).
-// `valid` is false when the points do not define a tangent (coincident or
-// non-finite points); every other field is then NaN.
+// The curve at the middle point: curvature kappa >= 0, unit tangent (from the
+// points before to those after), unit principal normal towards the centre (zero
+// where straight), curvature_vector = kappa principal_normal; `valid` false (and
+// NaN fields) where the points define no tangent.
 struct Curve_estimate
 {
   bool valid = false;
@@ -61,11 +56,8 @@ inline Curve_estimate curve_from_derivatives(const Eigen::Vector3d& d1, const Ei
 }
 
 // Wollmann's eq. (1): the quadratic Bezier segment B with B(0) = p0, B(1/2) = p1,
-// B(1) = p2 (control points p0, 2 p1 - (p0 + p2)/2, p2). At t = 1/2,
-// B' = p2 - p0 and B'' = 4 (p2 + p0 - 2 p1) (the paper prints B'' without the
-// factor 4 but keeps it in eq. 1); so
-//   kappa = 4 |(p2 - p0) x (p2 + p0 - 2 p1)| / |p2 - p0|^3.
-// Error O(h^2) for points c(-h), c(0), c(h) of a smooth curve c.
+// B(1) = p2; at t = 1/2, B' = p2 - p0 and B'' = 4 (p2 + p0 - 2 p1) (the paper
+// prints B'' without the factor 4). Error O(h^2) for points c(-h), c(0), c(h).
 inline Curve_estimate bezier_curve_curvature(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
                                              const Eigen::Vector3d& p2)
 {
@@ -73,12 +65,9 @@ inline Curve_estimate bezier_curve_curvature(const Eigen::Vector3d& p0, const Ei
 }
 
 // The circle through p0, p1, p2 (Todd and McLeod), at p1: with a = p0 - p1,
-// b = p2 - p1, kappa = 2 |a x b| / (|a| |b| |a - b|); the curvature vector
-// points from p1 to the centre (c - p1)/|c - p1|^2,
-//   c - p1 = ((|a|^2 b - |b|^2 a) x (a x b)) / (2 |a x b|^2);
-// the tangent is the circle's at p1, oriented from p0 towards p2. Exact for
-// points of a circle; independent of how the points are spaced along the curve.
-// Collinear points give kappa = 0 and the tangent p2 - p0.
+// b = p2 - p1, kappa = 2 |a x b| / (|a| |b| |a - b|), the centre c - p1 =
+// ((|a|^2 b - |b|^2 a) x (a x b)) / (2 |a x b|^2); the tangent oriented from p0
+// towards p2. Collinear points give kappa = 0 and the tangent p2 - p0.
 inline Curve_estimate circle_curve_curvature(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
                                              const Eigen::Vector3d& p2)
 {
@@ -114,19 +103,12 @@ inline Curve_estimate circle_curve_curvature(const Eigen::Vector3d& p0, const Ei
   return result;
 }
 
-// Wollmann's section 5. With f(x) = a0 + a1 x + a2 x^2 + ..., the even part
-// g(kx) = (f(kx) + f(-kx))/2 = a0 + a2 k^2 x^2 + a4 k^4 x^4 + ... and the odd part
-// u(kx) = (f(kx) - f(-kx))/2 = a1 k x + a3 k^3 x^3 + ... for k = 1..n.
-// b solves  sum_k b_k k^(2m)   = 0 for m = 2..n      (x^4 .. x^2n vanish in sum b_k g_k),
-// c solves  sum_k c_k k^(2m+1) = 0 for m = 1..n-1    (x^3 .. x^(2n-1) vanish in sum c_k u_k).
-// Both are one-dimensional kernels of Vandermonde-type systems; with y_k = k^2
-// they are the divided-difference weights
-//   b_k = 1 / (k^4 prod_{j != k} (y_k - y_j)),  c_k = 1 / (k^3 prod_{j != k} (y_k - y_j)),
-// (for n = 1, b_1 = c_1 = 1). Returned normalised as the paper's
-//   B = 2 sum_k beta_k (g_k - a0),  beta_k = b_k / sum_j b_j j^2,
-//   A =   sum_k alpha_k u_k,         alpha_k = c_k / sum_j c_j j,
-// so that A = a1 x + O(x^(2n+1)) and B = 2 a2 x^2 + O(x^(2n+2)): for n = 2,
-// alpha = (4/3, -1/6) and 2 beta = (8/3, -1/6), the classical fourth-order central differences.
+// Wollmann's section 5: the coefficients alpha_k, beta_k of the odd and even
+// parts u_k, g_k of the points at +-k h, k = 1..n, that cancel the Taylor terms
+// x^3 .. x^(2n-1) and x^4 .. x^2n: with y_k = k^2, the divided-difference weights
+// c_k = 1 / (k^3 prod_{j != k} (y_k - y_j)), b_k = 1 / (k^4 prod_{j != k} (y_k - y_j)),
+// normalised as the paper's alpha_k = c_k / sum_j c_j j, beta_k = b_k / sum_j b_j j^2
+// (n = 2: alpha = (4/3, -1/6), 2 beta = (8/3, -1/6), the fourth-order central differences).
 struct Extrapolation_coefficients
 {
   int order = 0;

@@ -1,19 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The way from a public estimator's call to its output maps, written once for
-// every estimator: the vertex point map, the given normals, the vertex loop
-// (sequential or parallel) and the outputs. What differs between estimators is a
-// local estimator, which knows nothing of named parameters:
-//
-//   Estimate estimate(vertex, const Normal* given)
-//       the estimate at one vertex; `given` is the user's normal there (any length,
-//       not checked), or null when no vertex_normal_map was passed or the local
-//       estimator declares `static constexpr bool uses_given_normals = false`.
-//
-// A local estimator is copyable: one copy per thread holds that thread's buffers.
-// A public estimator reads and checks its own parameters, then calls
-// estimate_surface_curvatures (FaceGraph) with a function that makes its local
-// estimator from the vertex point map; the hypersurface estimator
-// (hypersurface_paraboloid_fitting.h) calls estimate_at_vertices over its stars.
+// The way from a public estimator's call to its output maps, written once: the
+// vertex point map, the given normals, the vertex loop and the outputs. What
+// differs between estimators is a local estimator (doc/adding_an_estimator.md):
+// `Estimate estimate(vertex, const Normal* given)`, `given` the user's normal or
+// null; copyable, one copy per thread.
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_ESTIMATE_AT_VERTICES_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_ESTIMATE_AT_VERTICES_H
 

@@ -15,11 +15,8 @@ namespace CGAL {
 namespace Curvature_estimation {
 namespace internal {
 
-// The normal curvature along the unit tangent (x, y) of a tangent frame is
-//   k_n = S11 x^2 + 2 S12 x y + S22 y^2
-// for the symmetric second fundamental form S (Euler's theorem, k_n(phi) =
-// k1 cos^2 phi + k2 sin^2 phi, written linearly in S; its eigen-decomposition is
-// the (k1, k2, phi) of the papers, without their case distinctions). Three
+// Euler's theorem written linearly in the second fundamental form S: the normal
+// curvature along the unit tangent (x, y) is S11 x^2 + 2 S12 x y + S22 y^2. Three
 // directions determine S exactly, more by (weighted) least squares.
 class Euler_fit
 {
@@ -32,10 +29,8 @@ public:
     right_hand_side_ += (weight * normal_curvature) * row;
   }
 
-  // S, or false when the directions do not determine it: the 2-norm condition
-  // number of the (weighted) sample rows (the square root of the normal matrix's) exceeds
-  // `max_condition`. Three directions 60 degrees apart give about 2; it grows
-  // without bound as directions come together modulo pi.
+  // S, or false where the 2-norm condition number of the (weighted) sample rows
+  // exceeds `max_condition` (about 2 for three directions 60 degrees apart).
   bool solve(double max_condition, Eigen::Matrix2d& shape) const
   {
     Eigen::Vector3d values;

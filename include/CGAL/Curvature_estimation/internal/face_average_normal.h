@@ -59,42 +59,14 @@ Face_walk walk_face(typename boost::graph_traits<FaceGraph>::halfedge_descriptor
   return walk;
 }
 
-/// Computes at vertex `v` of `g` the unit weighted average of the unit normals of the
-/// faces incident to `v`, with the weights of `method` (one of `area_weighted`,
-/// `angle_weighted`, `centroid_weighted`), in `double`.
-///
-/// - Faces may be any polygons: a face normal is given by Newell's method over all the
-///   vertices of the face (twice the vector area of the face), the angle at `v` by the two
-///   edges of the face incident to `v` (measured around the face normal, so that a
-///   reflex vertex of a non-convex face gets an angle larger than pi), the centroid
-///   as the mean of the vertices of the face.
-/// - Border halfedges (null faces) are skipped. A face of zero vector area
-///   contributes nothing; for `angle_weighted`, neither does a face with a zero-length
-///   edge at `v`. For `centroid_weighted`, a face whose centroid is `v` (possible only
-///   for a non-convex polygon), or so close to it that the weight overflows, has an
-///   infinite weight: the result is then the average of the unit normals of such faces
-///   alone (the limit of the weighted average as their centroids tend to `v`).
-/// - A face with a non-finite point (or a coordinate difference that overflows)
-///   contributes nothing, so that one bad vertex does not take its neighbors' normals.
-/// - The coordinates are taken relative to `v` and divided by the largest
-///   coordinate difference between `v` and its neighbors, so the result does not depend
-///   on the scale of the mesh (no overflow or underflow for tiny or huge meshes).
-///
-/// \returns a unit vector; or the zero vector when `v` is isolated, has no incident face,
-/// or when all its incident faces are degenerate, have a non-finite point, or their
-/// weighted normals cancel; a vector of quiet NaNs when the point of `v` is not finite
-/// or the weighted sum overflows.
-/// Callers test `n.allFinite() && n.squaredNorm() > 0`.
-///
-/// Pure and allocation-free: it may be called concurrently for different vertices
-/// provided `get(vpm, ·)` may (see the note on `Polyhedron_3`'s dynamic maps in the design).
-///
-/// \pre `method != Vertex_normal_method::quadric_fit` (otherwise `std::invalid_argument`
-/// is thrown: that method is not an average of face normals).
-///
-/// \tparam FaceGraph a model of `FaceGraph`
-/// \tparam VPM a model of `ReadablePropertyMap` from the vertex descriptor to a point
-///         type with `x()`, `y()`, `z()` convertible by `CGAL::to_double()`
+// The unit average at vertex `v` of the unit normals of its faces, weighted by
+// `method` (`area_weighted`, `angle_weighted` or `centroid_weighted`; quadric_fit
+// throws std::invalid_argument), in double, in coordinates relative to `v` scaled
+// by the largest difference to its neighbors. Faces may be any polygons (Newell's
+// normal; a reflex angle exceeds pi); a degenerate face or one with a non-finite
+// point contributes nothing; faces whose centroid is `v` have an infinite centroid
+// weight (their average alone). The zero vector where `v` has no usable face or the
+// normals cancel; NaNs where its point is not finite or the sum overflows.
 template <typename FaceGraph, typename VPM>
 Eigen::Vector3d face_average_normal(typename boost::graph_traits<FaceGraph>::vertex_descriptor v, const FaceGraph& g,
                                     const VPM& vpm, Vertex_normal_method method)

@@ -44,16 +44,11 @@ constexpr bool accessible_concurrently()
   return Accessible_concurrently<std::remove_cv_t<std::remove_reference_t<Map>>>::value;
 }
 
-// A Worker is copyable (one copy per thread holds that thread's buffers) and has
-//   Input  load(vertex) const           reads the user's input maps,
-//   Result compute(vertex, const Input&) the estimate, touching no property map
-//                                        but the vertex point map.
-// store(vertex, result) writes the user's output maps.
-// load and store run on the calling thread unless `concurrent_maps` says that
-// every map they touch is accessible_concurrently (above): property maps such as
-// the dynamic ones of Polyhedron_3 insert on `get` and are not thread-safe. In
-// parallel, vertices go in blocks of fixed size, so the extra memory is
-// O(block + threads x neighborhood), not O(#vertices).
+// A Worker is copyable (one copy per thread) and has `Input load(vertex) const`
+// (the user's input maps) and `Result compute(vertex, const Input&)` (touching no
+// map but the vertex point map); store(vertex, result) writes the outputs. load
+// and store run on the calling thread unless `concurrent_maps`. In parallel,
+// vertices go in blocks of fixed size: extra memory O(block + threads x neighborhood).
 template <typename ConcurrencyTag, bool concurrent_maps = false, typename VertexRange, typename Worker, typename Store>
 void for_each_vertex(const VertexRange& vertices, const Worker& worker, Store store)
 {

@@ -7,7 +7,7 @@
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_GAUSS_MAP_DIFFERENTIAL_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_GAUSS_MAP_DIFFERENTIAL_H
 
-#include <CGAL/Curvature_estimation/internal/neighborhood.h>
+#include <CGAL/Curvature_estimation/internal/rings.h>
 #include <CGAL/Curvature_estimation/internal/shape_matrix_estimate.h>
 #include <CGAL/Curvature_estimation/internal/tangent_frame.h>
 
@@ -33,15 +33,11 @@ namespace CGAL {
 namespace Curvature_estimation {
 namespace internal {
 
-// Accumulates sum_f w_f J_f / sum_f w_f, where J_f is the 3x3 Jacobian of the
-// normal on face f at the corner of the vertex p: the linear interpolation of N
-// over the corner (p, q_j, q_k) has dN(u) = J_f u with
-//   J_f = [N_j - N_p, N_k - N_p] Gram^-1 [q_j - p, q_k - p]^T     (eqs. 19-21),
-// whose row c is the gradient of the component n_c; w_f = 1 / |G_f - p|^2 (eq. 23)
-// with `centroid_weights`, else w_f = |(q_j - p) x (q_k - p)|, twice the area of the
-// corner (the face's area for a triangle), which gives slivers, whose gradients
-// divide the normals' errors by their tiny heights, a weight in proportion.
-// Pure and allocation-free: the corner data are given relative to p.
+// Accumulates sum_f w_f J_f / sum_f w_f, J_f the 3x3 Jacobian of the normal on
+// face f at the corner of the vertex p, of the linear interpolation of N over the
+// corner (p, q_j, q_k): J_f = [N_j - N_p, N_k - N_p] Gram^-1 [q_j - p, q_k - p]^T
+// (eqs. 19-21); w_f = 1 / |G_f - p|^2 (eq. 23) with `centroid_weights`, else the
+// corner's doubled area |(q_j - p) x (q_k - p)|. Pure and allocation-free.
 class Gauss_map_differential
 {
 public:
@@ -111,15 +107,11 @@ private:
 };
 
 // The least-squares differential of the normal at p in the tangent frame T of p's
-// normal: the 2x2 matrix A minimising sum_i |T^T (N_i - N_p) - A T^T (q_i - p)|^2
-// over the neighbors q_i, all at once, so that no single face's height divides
-// anything; unweighted, so that a neighbor nearly coincident with p (whose normal
-// differs from N_p by the normals' errors, not by the curvature) has a weight in
-// proportion to its squared distance. A = B M^-1 with M = sum x_i x_i^T and
-// B = sum d_i x_i^T, x_i = T^T (q_i - p), d_i = T^T (N_i - N_p); a_ij = <e_i, dN(e_j)>,
-// the matrix of Gauss_map_differential::shape_matrix. Exact for exact normals of a
-// sphere (N_i - N_p = (q_i - p) / r). Pure and allocation-free: the data are given
-// relative to p.
+// normal: the 2x2 A minimising sum_i |T^T (N_i - N_p) - A T^T (q_i - p)|^2 over the
+// neighbors q_i, all at once and unweighted (a neighbor nearly coincident with p
+// weighs as its squared distance): A = B M^-1, M = sum x_i x_i^T, B = sum d_i x_i^T,
+// x_i = T^T (q_i - p), d_i = T^T (N_i - N_p). Exact for exact normals of a sphere.
+// Pure and allocation-free.
 class Gauss_map_least_squares
 {
 public:
@@ -135,12 +127,8 @@ public:
   }
 
   // False when the projected neighbors lie on a line through p (or there are
-  // none): the differential is then not determined in every tangent direction.
-  // The solution B M^-1 does not change under a linear change of tangent
-  // coordinates, so an anisotropic stencil is no reason to refuse: only a singular
-  // one is. det M / tr(M)^2 (invariant under rotation and scaling) is 1/4 for an
-  // isotropic stencil and about 1 / cond M for an elongated one; below 1e-12 M is
-  // singular to rounding.
+  // none). B M^-1 does not change under a linear change of tangent coordinates, so
+  // only a singular M is refused: det M / tr(M)^2 below 1e-12 (1/4 when isotropic).
   bool determined() const
   {
     const double trace = moments_.trace();
@@ -231,14 +219,8 @@ struct Shared_vertex_normals
 // The Gauss-map estimate at one vertex of a FaceGraph (faces: any polygons;
 // border halfedges are skipped, so boundary vertices use the faces they have),
 // with the unit normals of `Normals`: find(u, n), false where u has none
-// (Shared_vertex_normals, or normals computed on demand).
-//
-// Why the 2-ring for the least squares: on marching-tetrahedra meshes a vertex
-// near a grid corner has all its 1-ring within 1e-3 of the mean edge length h;
-// the normals' errors (O(h^2), not correlated at that scale) divided by that
-// distance reach O(10 / h) (measured |H| errors up to 119 with a 1-ring fit at 80 cells,
-// 1,579 with the per-face centroid weights). The 2-ring reaches the vertices at
-// distance ~h around such a cluster, and the unweighted fit is dominated by them.
+// (Shared_vertex_normals, or normals computed on demand). The least squares are
+// over the 2-ring (the manual says why).
 template <typename FaceGraph, typename VertexPointMap, typename Normals = Shared_vertex_normals<FaceGraph>>
 class Gauss_map_estimator
 {
@@ -319,12 +301,9 @@ private:
     return least_squares_.determined();
   }
 
-  // The least squares over the connected part of the mesh in the ball of radius
-  // ball_radius_ (Ring_collector::grow_ball), grown as fit_in_growing_ball says
-  // (to at least 6 vertices, twice the 3 that determine the differential, then
-  // while it is not determined); status widened where it grew. The normals'
-  // noise, divided by distances up to the radius and averaged over the ball,
-  // falls as the radius grows (test_ball_radius).
+  // The least squares over the ball of radius ball_radius_, grown as
+  // fit_in_growing_ball says (to at least twice the 3 vertices that determine the
+  // differential, then while it is not determined); status widened where it grew.
   Surface_estimate ball_least_squares(const Tangent_frame& tangents, const Eigen::Vector3d& normal)
   {
     const FaceGraph& g = local_.graph();

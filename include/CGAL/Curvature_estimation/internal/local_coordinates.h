@@ -36,10 +36,8 @@ Eigen::Vector3d point_in_double(const VertexPointMap& vpm, VertexDescriptor u)
   return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
 }
 
-// The local length scale at `v`: the mean distance from `center` (the point of v)
-// to the neighbors joined to v by an edge, ignoring coincident and non-finite
-// ones; 0 when there is none. Coordinates divided by it make the estimators
-// scale invariant.
+// The mean distance from `center` (the point of v) to the neighbors joined to v
+// by an edge, ignoring coincident and non-finite ones; 0 when there is none.
 template <typename FaceGraph, typename VertexPointMap>
 double neighbor_length_scale(typename boost::graph_traits<FaceGraph>::vertex_descriptor v, const FaceGraph& g,
                              const VertexPointMap& vpm, const Eigen::Vector3d& center)

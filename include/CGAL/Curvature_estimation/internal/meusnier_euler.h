@@ -23,12 +23,8 @@ namespace CGAL {
 namespace Curvature_estimation {
 namespace internal {
 
-// Meusnier's theorem, kappa_c cos(theta) = kappa_n, in the package's sign: a curve
-// with curvature vector kappa h (h its principal normal) through a point with
-// unit surface normal N has the normal curvature
-//   k_n = -kappa <h, N>,
-// positive where the surface bends away from N (on a sphere with outward N every
-// curve's principal normal has a negative component along N, and k_n = 1/r).
+// Meusnier's theorem in the package's sign: a curve with curvature vector kappa h
+// through a point of unit normal N has the normal curvature k_n = -kappa <h, N>.
 inline double meusnier_normal_curvature(const Eigen::Vector3d& curvature_vector, const Eigen::Vector3d& normal)
 {
   return -curvature_vector.dot(normal);
@@ -86,10 +82,8 @@ struct Euler_solution
 };
 
 // Directions whose Euler system has a 2-norm condition number above this are
-// rejected: three directions 60 degrees apart give about 2 (a grid's two lines
-// and diagonal a little more); it grows without bound as two directions come
-// together, and normal curvatures with a few percent error, amplified by more
-// than this, give garbage (measured on jittered grids and Delaunay meshes).
+// rejected (three directions 60 degrees apart give about 2; beyond this, normal
+// curvatures with a few percent error give garbage).
 constexpr double euler_max_condition_number = 20;
 
 // Euler's theorem (see Euler_fit) for 3D directions at a vertex of normal

@@ -1,20 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Normal-curvature samples at a vertex, the common input of Taubin's tensor and
-// of Chen and Schmitt's Euler fit (Chen, Wu and Chi 2005, section 3):
-// for every neighbor q_i joined to the vertex p by an edge (or, on wider rings,
-// every vertex q_i of the k-ring), the unit tangent t_i (the projection of
-// q_i - p on the tangent plane, eq. 9), the normal curvature of the circle
-// through p and q_i tangent to the plane (eq. 10), |q_i - p|^2, and for edges
-// the two candidate weights of the edge (areas and centroid weights of the one
-// or two faces on the edge). Also the vertex loop both baselines share.
+// of Chen and Schmitt's Euler fit (Chen, Wu and Chi 2005, section 3, eqs. 9-10),
+// and the vertex loop both baselines share.
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_NORMAL_CURVATURE_SAMPLES_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_NORMAL_CURVATURE_SAMPLES_H
 
 #include <CGAL/Curvature_estimation/internal/estimate_at_vertices.h>
 #include <CGAL/Curvature_estimation/internal/face_average_normal.h>
-#include <CGAL/Curvature_estimation/internal/face_graph_platelet.h>
+#include <CGAL/Curvature_estimation/internal/face_graph_neighborhood.h>
 #include <CGAL/Curvature_estimation/internal/local_coordinates.h>
-#include <CGAL/Curvature_estimation/internal/neighborhood.h>
+#include <CGAL/Curvature_estimation/internal/rings.h>
 #include <CGAL/Curvature_estimation/internal/shape_matrix_estimate.h>
 #include <CGAL/Curvature_estimation/internal/tangent_frame.h>
 #include <CGAL/Curvature_estimation/parameters.h>
@@ -60,13 +55,9 @@ public:
       : local_(g, vpm)
   {}
 
-  // Fills `samples` at `v` for the unit `normal` and its tangent frame: with
-  // `rings == 1` one sample per edge (p, q_i), with face weights; wider, one per
-  // vertex of the k-ring, without. Returns the length scale of the coordinates
-  // (the mean distance from v to its neighbors), or 0 when v is isolated or its
-  // point or all its neighbors are unusable. Curvatures are positive where the
-  // neighbor lies below the tangent plane (the package's convention: 1/r on a
-  // sphere with outward normals).
+  // Fills `samples` at `v`: one per edge with face weights (`rings == 1`), else
+  // one per vertex of the rings. Returns the coordinates' length scale (the mean
+  // distance to the neighbors), 0 where v has no usable neighbor.
   double sample(vertex_descriptor v, const Eigen::Vector3d& normal, const Tangent_frame& tangents, int rings,
                 std::vector<Normal_curvature_sample>& samples)
   {
@@ -142,7 +133,7 @@ struct Normal_curvature_sample_estimator
 {
   using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
 
-  Platelet_fitter<FaceGraph, VertexPointMap> fitter;
+  Surface_fitter<FaceGraph, VertexPointMap> fitter;
   Normal_curvature_sampler<FaceGraph, VertexPointMap> sampler;
   Vertex_normal_method method;
   int rings;
@@ -179,7 +170,7 @@ void normal_curvature_sample_curvatures(const FaceGraph& g, const NamedParameter
   estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
     using VPM = std::decay_t<decltype(vpm)>;
     return Normal_curvature_sample_estimator<FaceGraph, VPM, Solve>{
-      Platelet_fitter<FaceGraph, VPM>(g, vpm, fit.settings),
+      Surface_fitter<FaceGraph, VPM>(g, vpm, fit.settings),
       Normal_curvature_sampler<FaceGraph, VPM>(g, vpm),
       fit.normal_method,
       rings,

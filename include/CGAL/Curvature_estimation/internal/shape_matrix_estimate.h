@@ -26,13 +26,9 @@ namespace CGAL {
 namespace Curvature_estimation {
 namespace internal {
 
-// Curvatures and directions from the shape matrix `shape` in the tangent frame
-// `tangents` of the unit `normal`, in the package's convention (the normal
-// curvature along the unit tangent `tangents * x` is x^T sym(shape) x; a sphere
-// with outward normals has the matrix I / r). The matrix is given in coordinates
-// divided by `scale`; K = det(shape) by default (`gaussian_from_determinant`),
-// else the product of the principal curvatures. Not estimable (NaN) when
-// anything is not finite.
+// Curvatures and directions from the shape matrix `shape` (normal curvature along
+// `tangents * x`: x^T sym(shape) x) in coordinates divided by `scale`; K = det(shape)
+// with `gaussian_from_determinant`, else k1 k2. Not estimable where not finite.
 inline Surface_estimate shape_estimate_from_matrix(const Eigen::Matrix2d& shape, const Tangent_frame& tangents,
                                                    const Eigen::Vector3d& normal, double scale,
                                                    bool gaussian_from_determinant)

@@ -14,10 +14,8 @@ namespace CGAL {
 namespace Curvature_estimation {
 namespace internal {
 
-// Curvatures in the package's convention (positive where the surface bends away
-// from the normal, so a sphere with outward normals has 1/r), sorted in
-// decreasing order; directions are unit tangent vectors of R^N, column i for
-// curvature i; `normal` is the graph's normal at the origin.
+// Curvatures in the package's convention, decreasing; directions unit tangent
+// vectors of R^N, column i for curvature i; `normal` the graph's at the origin.
 template <int N>
 struct Graph_curvature
 {
@@ -27,11 +25,9 @@ struct Graph_curvature
   Eigen::Matrix<double, N, 1> normal;
 };
 
-// The graph of h(x) = g.x + 1/2 x^T C x over the frame (origin, columns of
-// `tangents`, `normal`): first fundamental form G = I + g g^T, second C / l with
-// l = sqrt(1 + |g|^2); the shape operator G^-1 C / l is diagonalised in the
-// symmetric form G^-1/2 C G^-1/2 / l, whose eigenvectors w give parameter
-// directions G^-1/2 w that are unit in the metric G.
+// The graph of h(x) = g.x + 1/2 x^T C x over the frame: G = I + g g^T,
+// l = sqrt(1 + |g|^2); the shape operator G^-1 C / l diagonalised in the symmetric
+// form G^-1/2 C G^-1/2 / l, whose eigenvectors w give the directions G^-1/2 w.
 template <int N>
 Graph_curvature<N>
 graph_curvature(const Eigen::Matrix<double, N - 1, N - 1>& hessian, const Eigen::Matrix<double, N - 1, 1>& gradient,

@@ -105,8 +105,8 @@ void put_surface_estimate(const NamedParameters& np, VertexDescriptor v, const S
   (void)e;
 }
 
-// An estimator's documented fallback estimate: `e` (a Surface_estimate or a
-// Hypersurface_estimate) with the status fallback unless it is not estimable.
+// `e` (a Surface_estimate or a Hypersurface_estimate) as a fallback's estimate:
+// with the status fallback unless it is not estimable.
 template <typename Estimate>
 Estimate as_fallback(Estimate e)
 {

@@ -1,19 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The symmetric eigen-solvers of the package, in one place. The policy:
-//  - a shape operator (2 x 2 for surfaces, 3 x 3 for hypersurfaces), whose eigenvalues
-//    are the curvatures: symmetric_eigen, in closed form for 2 x 2 (Eigen's direct 2 x 2
-//    solver costs more than the whole fit) and by Eigen's direct solver for 3 x 3;
-//  - a normal matrix or scatter matrix whose SMALLEST eigenvalue decides (a condition
-//    number, the normal of a plane of points or directions): symmetric_eigen_accurate,
-//    Eigen's iterative QL solver, which keeps the small eigenvalues' relative accuracy
-//    that the direct solver loses;
-//  - the scatter matrix of points whose smallest eigenvector is the normal of their
-//    least-squares hyperplane: least_squares_hyperplane_normal, in R^3 (the frame of
-//    the degree-4 fit) by smallest_eigenvector, whose eigenvector of a well-separated
-//    smallest eigenvalue is accurate (where it is not separated, the points are nearly
-//    on a line and the fit in that frame is refused), in R^4 (the tetrahedral fit's
-//    restart) by cyclic Jacobi rotations, because Eigen's iterative solver at that size
-//    warns under GCC 12's -Wmaybe-uninitialized.
+// The symmetric eigen-solvers of the package, in one place: shape operators
+// (symmetric_eigen: closed form in 2 x 2, Eigen's direct solver in 3 x 3); matrices
+// whose smallest eigenvalue decides (symmetric_eigen_accurate: Eigen's iterative
+// solver, which keeps its relative accuracy); the normal of a least-squares
+// hyperplane (smallest_eigenvector in R^3, cyclic Jacobi rotations in R^4, where
+// Eigen's iterative solver warns under GCC 12's -Wmaybe-uninitialized).
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_SYMMETRIC_EIGEN_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_SYMMETRIC_EIGEN_H
 
@@ -81,18 +72,11 @@ inline int longest_of_three(const Eigen::Vector3d (&vectors)[3])
   return longest;
 }
 
-// The unit eigenvector of the smallest eigenvalue of a symmetric positive
-// semi-definite 3 x 3 matrix A (NaN where A is zero). The eigenvalue is the root
-// of p(l) = det(A - l I) that Newton's method reaches from 0: below the smallest
-// eigenvalue l1 the step -p/p' = 1 / sum_i 1/(l_i - l) is positive and at most
-// l1 - l, so the iterates rise to l1 without passing it, at once where l1 is far
-// below the others (points near a plane: the first step is l1 (1 - O(l1/l2)), and
-// the convergence is quadratic), linearly where l1 is a double root. The
-// eigenvector is the longest cross product of two rows of A - l1 I, as in Eigen's
-// direct solver, which spends its time on the trigonometric closed form of all
-// three eigenvalues instead. Near a double root l1 = l2 the eigenvalue is only
-// known to about sqrt(rounding), and so is the eigenvector (any unit vector of
-// their plane); the points are then near a line, and the fits refuse the frame.
+// The unit eigenvector of the smallest eigenvalue l1 of a symmetric positive
+// semi-definite 3 x 3 matrix A (NaN where A is zero): l1 by Newton's method on
+// det(A - l I) from 0 (the iterates rise to l1 without passing it), the vector as
+// the longest cross product of two rows of A - l1 I. Near a double root only to
+// about sqrt(rounding): the points are then near a line, and the fits refuse the frame.
 inline Eigen::Vector3d smallest_eigenvector(const Eigen::Matrix3d& a)
 {
   const double c2 = a.trace();

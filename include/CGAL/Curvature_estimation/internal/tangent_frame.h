@@ -12,10 +12,8 @@ namespace internal {
 // The tangent frame of a surface in R^3: two orthonormal tangent vectors as columns.
 using Tangent_frame = Eigen::Matrix<double, 3, 2>;
 
-// The columns of the Householder reflection that maps the axis e_k most aligned
-// with `n` onto -sign(n_k) n are orthonormal; the N-1 columns other than k span the
-// tangent space. Branch-free apart from the choice of k, and the same formula for
-// surfaces in R^3 and hypersurfaces in R^4. `n` must have unit length.
+// The N-1 columns other than k of the Householder reflection that maps the axis
+// e_k most aligned with the unit `n` onto -sign(n_k) n.
 template <int N>
 Eigen::Matrix<double, N, N - 1> tangent_basis(const Eigen::Matrix<double, N, 1>& n)
 {

@@ -1,18 +1,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The neighborhood policy that runs the platelet fit of platelet_fit.h at the
-// vertices of a FaceGraph, and the fitter it makes.
-#ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_FACE_GRAPH_PLATELET_H
-#define CGAL_CURVATURE_ESTIMATION_INTERNAL_FACE_GRAPH_PLATELET_H
+// The neighborhood policy that runs the fits of vertex_fitter.h at the vertices
+// of a FaceGraph, and the fitter it makes.
+#ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_FACE_GRAPH_NEIGHBORHOOD_H
+#define CGAL_CURVATURE_ESTIMATION_INTERNAL_FACE_GRAPH_NEIGHBORHOOD_H
 
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/Vertex_normal_method.h>
 #include <CGAL/Curvature_estimation/internal/face_average_normal.h>
-#include <CGAL/Curvature_estimation/internal/fit_parameters.h>
+#include <CGAL/Curvature_estimation/internal/fit_settings.h>
 #include <CGAL/Curvature_estimation/internal/local_coordinates.h>
-#include <CGAL/Curvature_estimation/internal/neighborhood.h>
-#include <CGAL/Curvature_estimation/internal/platelet_fit.h>
+#include <CGAL/Curvature_estimation/internal/rings.h>
 #include <CGAL/Curvature_estimation/internal/shape_operator.h>
 #include <CGAL/Curvature_estimation/internal/surface_estimate.h>
+#include <CGAL/Curvature_estimation/internal/vertex_fitter.h>
 
 #include <boost/graph/graph_traits.hpp>
 
@@ -30,7 +30,7 @@ namespace internal {
 // The neighborhood policy of a FaceGraph: k-rings by halfedge circulation, the
 // area-weighted normal (or another face average) as the first-order normal.
 template <typename FaceGraph, typename VertexPointMap>
-class Face_graph_platelet
+class Face_graph_neighborhood
 {
 public:
   static constexpr int ambient_dimension = 3;
@@ -39,8 +39,8 @@ public:
   using Estimate = Surface_estimate;
 
   // `adjacency`: see Ring_collector::use_adjacency.
-  Face_graph_platelet(const FaceGraph& g, VertexPointMap vpm,
-                      std::shared_ptr<const Vertex_adjacency> adjacency = nullptr)
+  Face_graph_neighborhood(const FaceGraph& g, VertexPointMap vpm,
+                          std::shared_ptr<const Vertex_adjacency> adjacency = nullptr)
       : g_(&g)
       , vpm_(vpm)
   {
@@ -63,7 +63,7 @@ public:
   std::size_t ball_size() const { return rings_.ball_size(); }
 
   // Face averages need no neighborhood.
-  static bool platelet_for_normal(Vertex_normal_method method) { return method == Vertex_normal_method::quadric_fit; }
+  static bool gathers_for_normal(Vertex_normal_method method) { return method == Vertex_normal_method::quadric_fit; }
 
   // The area-weighted normal from the gathered 1-ring for quadric_fit, and for
   // area_weighted where the 1-ring is gathered and its faces are triangles (the same
@@ -106,30 +106,28 @@ private:
   Ring_collector<FaceGraph> rings_;
 };
 
-// The platelet fit at the vertices of a FaceGraph. Fits that gather more than
-// the 1-ring at most vertices (fit_degree 3 and 4, balls, wider starting rings)
-// read the rings from the graph's Vertex_adjacency, built here once: on the
-// 1M-vertex grid it costs 12 to 17 ns per vertex, and degree 4 takes 75 ns per
-// vertex less with it (250 on the grid of 100,000 vertices); the default, on the
-// 1-ring but where it widens, would not win it back.
+// The fits of vertex_fitter.h at the vertices of a FaceGraph. Fits that gather
+// more than the 1-ring at most vertices (fit_degree 3 and 4, balls, wider
+// starting rings) read the rings from the graph's Vertex_adjacency, built here
+// once; the default, on the 1-ring but where it widens, would not win it back.
 template <typename FaceGraph, typename VertexPointMap>
-class Platelet_fitter : public Platelet_fit_core<Face_graph_platelet<FaceGraph, VertexPointMap>>
+class Surface_fitter : public Vertex_fitter<Face_graph_neighborhood<FaceGraph, VertexPointMap>>
 {
 public:
-  Platelet_fitter(const FaceGraph& g, VertexPointMap vpm, const Platelet_fit_settings& settings)
-      : Platelet_fitter(g, vpm, settings, beyond_one_ring(settings) ? vertex_adjacency(g) : nullptr)
+  Surface_fitter(const FaceGraph& g, VertexPointMap vpm, const Fit_settings& settings)
+      : Surface_fitter(g, vpm, settings, beyond_one_ring(settings) ? vertex_adjacency(g) : nullptr)
   {}
 
   // With the rings from `adjacency` (null: by halfedge circulation), for a fitter
   // that runs at few vertices.
-  Platelet_fitter(const FaceGraph& g, VertexPointMap vpm, const Platelet_fit_settings& settings,
-                  std::shared_ptr<const Vertex_adjacency> adjacency)
-      : Platelet_fit_core<Face_graph_platelet<FaceGraph, VertexPointMap>>(
-          Face_graph_platelet<FaceGraph, VertexPointMap>(g, vpm, std::move(adjacency)), settings)
+  Surface_fitter(const FaceGraph& g, VertexPointMap vpm, const Fit_settings& settings,
+                 std::shared_ptr<const Vertex_adjacency> adjacency)
+      : Vertex_fitter<Face_graph_neighborhood<FaceGraph, VertexPointMap>>(
+          Face_graph_neighborhood<FaceGraph, VertexPointMap>(g, vpm, std::move(adjacency)), settings)
   {}
 
 private:
-  static bool beyond_one_ring(const Platelet_fit_settings& settings)
+  static bool beyond_one_ring(const Fit_settings& settings)
   {
     return settings.degree > 2 || settings.ball_radius > 0 || settings.rings > 1 || settings.boundary_rings > 1;
   }
@@ -139,4 +137,4 @@ private:
 } // namespace Curvature_estimation
 } // namespace CGAL
 
-#endif // CGAL_CURVATURE_ESTIMATION_INTERNAL_FACE_GRAPH_PLATELET_H
+#endif // CGAL_CURVATURE_ESTIMATION_INTERNAL_FACE_GRAPH_NEIGHBORHOOD_H

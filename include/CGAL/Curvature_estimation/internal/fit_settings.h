@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The named parameters of Hamann's platelet fit, read once for every public
-// function that runs it (for its curvatures or for its quadric_fit normal): the
-// neighborhood rings or ball, the condition threshold and the normal method,
-// with the documented defaults, checked.
-#ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_FIT_PARAMETERS_H
-#define CGAL_CURVATURE_ESTIMATION_INTERNAL_FIT_PARAMETERS_H
+// The settings of the fitting estimators, read from the named parameters once for
+// every public function that fits (for its curvatures or for its fitted normal):
+// the neighborhood (rings or ball), the condition threshold, the degree and the
+// normal method, with the documented defaults, checked.
+#ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_FIT_SETTINGS_H
+#define CGAL_CURVATURE_ESTIMATION_INTERNAL_FIT_SETTINGS_H
 
 #include <CGAL/Curvature_estimation/Neighbor_weighting.h>
 #include <CGAL/Curvature_estimation/Vertex_normal_method.h>
@@ -17,24 +17,26 @@ namespace CGAL {
 namespace Curvature_estimation {
 namespace internal {
 
-struct Platelet_fit_settings
+struct Fit_settings
 {
   int rings = 1;          // rings an interior vertex starts with
   int boundary_rings = 1; // rings a boundary vertex starts with
   int max_rings = 3;      // widening stops here
   double max_condition = 1e3;
-  int degree = 2; // fit_degree: 2 Hamann's fit (and its default normal), 3 or 4 a Taylor fit of that degree
-  double ball_radius =
-    0; // > 0: the fits over the ball of this radius (see Platelet_fit_core::fit_in_ball), not the rings
+  int degree = 2;              // fit_degree
+  double ball_radius = 0;      // > 0: the fits over the ball of this radius, not the rings
   bool smooth_weights = false; // in the ball, Neighbor_weighting::smooth (else uniform)
-  // Whether test (b) of quadric_fit.h (whitened coordinates) may accept the
-  // widest neighborhood where test (a) refuses every one; false: test (a) alone.
+  // Whether the whitened test may accept the widest neighborhood where the
+  // scaled test refuses every one (false: the scaled test alone).
   bool whitened_conditioning = true;
+
+  int start_rings(bool on_border) const { return on_border ? boundary_rings : rings; }
+  bool in_ball() const { return ball_radius > 0; }
 };
 
 struct Fit_parameters
 {
-  Platelet_fit_settings settings;
+  Fit_settings settings;
   Vertex_normal_method normal_method;
 };
 
@@ -46,7 +48,7 @@ Fit_parameters fit_parameters(const NamedParameters& np, const char* caller, boo
 {
   if (!with_ball_radius)
     reject_ball_radius<NamedParameters>(caller);
-  Platelet_fit_settings settings;
+  Fit_settings settings;
   settings.rings = parameter_or(np, internal_np::neighborhood_rings, 1);
   settings.boundary_rings = parameter_or(np, internal_np::boundary_neighborhood_rings, settings.rings);
   settings.max_rings = parameter_or(np, internal_np::max_neighborhood_rings, 3);
@@ -88,4 +90,4 @@ Fit_parameters curvature_fit_parameters(const NamedParameters& np, const char* c
 } // namespace Curvature_estimation
 } // namespace CGAL
 
-#endif // CGAL_CURVATURE_ESTIMATION_INTERNAL_FIT_PARAMETERS_H
+#endif // CGAL_CURVATURE_ESTIMATION_INTERNAL_FIT_SETTINGS_H

@@ -1,16 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The neighborhood policy that runs the platelet fit of platelet_fit.h (Hamann's
-// thesis §4.3) at the vertices of a tetrahedral complex whose vertices are points
-// of R^4: k-rings over the CSR stars, and the 3-volume-weighted mean of the cells'
+// The neighborhood policy that runs the fits of vertex_fitter.h (Hamann's thesis
+// §4.3) at the vertices of a tetrahedral complex whose vertices are points of
+// R^4: rings over the stars, and the 3-volume-weighted mean of the cells'
 // normals as the first-order normal.
-#ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_TETRAHEDRAL_PLATELET_FIT_H
-#define CGAL_CURVATURE_ESTIMATION_INTERNAL_TETRAHEDRAL_PLATELET_FIT_H
+#ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_TETRAHEDRAL_NEIGHBORHOOD_H
+#define CGAL_CURVATURE_ESTIMATION_INTERNAL_TETRAHEDRAL_NEIGHBORHOOD_H
 
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/Tetrahedral_complex_traits.h>
-#include <CGAL/Curvature_estimation/internal/neighborhood.h>
-#include <CGAL/Curvature_estimation/internal/platelet_fit.h>
+#include <CGAL/Curvature_estimation/internal/rings.h>
 #include <CGAL/Curvature_estimation/internal/shape_operator.h>
+#include <CGAL/Curvature_estimation/internal/vertex_fitter.h>
 
 #include <Eigen/Core>
 
@@ -48,7 +48,7 @@ inline Eigen::Vector4d cross_product_4(const Eigen::Vector4d& a, const Eigen::Ve
 // method starts from the cells' mean (the estimator accepts quadric_fit and
 // area_weighted only).
 template <typename Stars>
-class Tetrahedral_platelet
+class Tetrahedral_neighborhood
 {
 public:
   static constexpr int ambient_dimension = 4;
@@ -60,7 +60,7 @@ public:
   using Vertex = std::size_t;
   using Estimate = Hypersurface_estimate;
 
-  Tetrahedral_platelet(const Stars& stars, const std::vector<Eigen::Vector4d>& points)
+  Tetrahedral_neighborhood(const Stars& stars, const std::vector<Eigen::Vector4d>& points)
       : stars_(&stars)
       , points_(&points)
   {}
@@ -80,7 +80,7 @@ public:
   bool inside_ball(std::size_t i) const { return rings_.inside_ball(i); }
   std::size_t ball_size() const { return rings_.ball_size(); }
 
-  static bool platelet_for_normal(Vertex_normal_method) { return true; }
+  static bool gathers_for_normal(Vertex_normal_method) { return true; }
 
   // The sum over the incident cells (a, b, c, d) of cross_product_4(b - a, c - a, d - a),
   // in coordinates relative to the center scaled by `scale`: the 3-volume-weighted
@@ -118,14 +118,13 @@ private:
   Tetrahedral_ring_collector rings_;
 };
 
-// The platelet fit at the vertices of a tetrahedral complex, whose points are `points`.
+// The fits of vertex_fitter.h at the vertices of a tetrahedral complex, whose points are `points`.
 template <typename Stars>
-class Tetrahedral_platelet_fitter : public Platelet_fit_core<Tetrahedral_platelet<Stars>>
+class Hypersurface_fitter : public Vertex_fitter<Tetrahedral_neighborhood<Stars>>
 {
 public:
-  Tetrahedral_platelet_fitter(const Stars& stars, const std::vector<Eigen::Vector4d>& points,
-                              const Platelet_fit_settings& settings)
-      : Platelet_fit_core<Tetrahedral_platelet<Stars>>(Tetrahedral_platelet<Stars>(stars, points), settings)
+  Hypersurface_fitter(const Stars& stars, const std::vector<Eigen::Vector4d>& points, const Fit_settings& settings)
+      : Vertex_fitter<Tetrahedral_neighborhood<Stars>>(Tetrahedral_neighborhood<Stars>(stars, points), settings)
   {}
 };
 
@@ -133,4 +132,4 @@ public:
 } // namespace Curvature_estimation
 } // namespace CGAL
 
-#endif // CGAL_CURVATURE_ESTIMATION_INTERNAL_TETRAHEDRAL_PLATELET_FIT_H
+#endif // CGAL_CURVATURE_ESTIMATION_INTERNAL_TETRAHEDRAL_NEIGHBORHOOD_H

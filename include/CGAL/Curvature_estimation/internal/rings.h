@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// k-ring neighborhoods of a vertex of a FaceGraph or of a tetrahedral complex,
-// grown one ring at a time so that an estimator can widen its stencil without
-// gathering it again; and on a FaceGraph, the neighborhood in a ball about the
-// vertex, grown with its radius.
-#ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_NEIGHBORHOOD_H
-#define CGAL_CURVATURE_ESTIMATION_INTERNAL_NEIGHBORHOOD_H
+// The rings of a vertex of a FaceGraph or of a tetrahedral complex, grown one at
+// a time so that a fit can widen without gathering again, and the ball about it
+// (ball.h) grown over the same connectivity.
+#ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_RINGS_H
+#define CGAL_CURVATURE_ESTIMATION_INTERNAL_RINGS_H
+
+#include <CGAL/Curvature_estimation/internal/ball.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -23,112 +24,6 @@ namespace CGAL {
 namespace Curvature_estimation {
 namespace internal {
 
-// The ball of a vertex in its mesh, for the collectors below: the vertices inside
-// the ball of a given radius about the center that are joined to it by edges
-// inside the ball (the connected part of the mesh in the ball, so that the other
-// side of a thin part is not taken), grown with the radius.
-template <typename Vertex>
-class Ball
-{
-public:
-  void clear() { active_ = false; }
-  // Whether grow has been called since clear.
-  bool active() const { return active_; }
-
-  // Grows the ball to the squared radius `squared_radius` in `vertices`, the
-  // collector's gathered vertices: the center first, then the 1-ring up to
-  // `one_ring_end`, which stays gathered whole; the vertices of the ball met
-  // beyond it are appended. neighbors(v, visit) calls visit(w) for each neighbor
-  // w of v; reach(w) marks w as met, false where it was already;
-  // squared_distance(w) is the squared distance of w to the center (NaN where
-  // unknown: never inside). The ball is then the vertices i with inside(i),
-  // size() of them, the center included. Returns whether vertices joined to the
-  // ball are left outside it (false: the component is exhausted).
-  template <typename Neighbors, typename Reach, typename SquaredDistance>
-  bool grow(std::vector<Vertex>& vertices, std::size_t one_ring_end, double squared_radius, const Neighbors& neighbors,
-            const Reach& reach, const SquaredDistance& squared_distance)
-  {
-    to_expand_.clear();
-    if (!active_) {
-      active_ = true;
-      outside_.clear();
-      inside_.assign(vertices.size(), 0);
-      size_ = 0;
-      add(vertices, 0);
-      for (std::size_t i = 1; i < one_ring_end; ++i) {
-        const double d = squared_distance(vertices[i]);
-        if (d <= squared_radius)
-          add(vertices, i);
-        else
-          outside_.push_back({vertices[i], d, i});
-      }
-    } else {
-      std::size_t kept = 0;
-      for (const Outside& o : outside_)
-        if (o.squared_distance <= squared_radius)
-          add(vertices, o.index, o.vertex);
-        else
-          outside_[kept++] = o;
-      outside_.resize(kept);
-    }
-    while (!to_expand_.empty()) {
-      const Vertex v = to_expand_.back();
-      to_expand_.pop_back();
-      neighbors(v, [&](const Vertex& w) {
-        if (!reach(w))
-          return;
-        const double d = squared_distance(w);
-        if (d <= squared_radius)
-          add(vertices, not_gathered, w);
-        else
-          outside_.push_back({w, d, not_gathered});
-      });
-    }
-    return !outside_.empty();
-  }
-
-  bool inside(std::size_t i) const { return inside_[i] != 0; }
-  std::size_t size() const { return size_; }
-  // Whether w was met next to the ball but outside it.
-  bool met_outside(const Vertex& w) const
-  {
-    for (const Outside& o : outside_)
-      if (o.vertex == w)
-        return true;
-    return false;
-  }
-
-private:
-  static constexpr std::size_t not_gathered = std::size_t(-1);
-
-  // Puts vertices[index] in the ball, or where not gathered, w appended to them.
-  void add(std::vector<Vertex>& vertices, std::size_t index, const Vertex& w = Vertex())
-  {
-    if (index == not_gathered) {
-      index = vertices.size();
-      vertices.push_back(w);
-      inside_.push_back(0);
-    }
-    inside_[index] = 1;
-    to_expand_.push_back(vertices[index]);
-    ++size_;
-  }
-
-  // A vertex met next to the ball but outside it; index: where gathered (the
-  // 1-ring), its place in the vertices.
-  struct Outside
-  {
-    Vertex vertex;
-    double squared_distance;
-    std::size_t index;
-  };
-  bool active_ = false;
-  std::vector<char> inside_; // per gathered vertex
-  std::size_t size_ = 0;
-  std::vector<Outside> outside_;
-  std::vector<Vertex> to_expand_; // in the ball, their neighbors still to be met
-};
-
 // Calls visit(neighbors[k]) for offsets[i] <= k < offsets[i + 1]: the neighbors
 // of vertex i in compressed rows, the layout of Vertex_adjacency and of
 // Tetrahedral_complex_stars.
@@ -141,10 +36,8 @@ void for_each_listed_neighbor(const Offsets& offsets, const Neighbors& neighbors
 
 // The neighbors of every vertex of a FaceGraph whose vertex descriptors are
 // indices (Surface_mesh), in the order of the halfedges around it, as 32-bit
-// indices in compressed rows (for_each_listed_neighbor): the rings beyond the
-// first read them instead of circulating the halfedges, a chain of dependent
-// loads over the mesh's connectivity (on a grid of 100,000 vertices,
-// fit_degree(4) spent 16% of its time there). 28 bytes per vertex of valence 6.
+// indices in compressed rows: the rings beyond the first read them instead of
+// circulating the halfedges, a chain of dependent loads.
 struct Vertex_adjacency
 {
   std::vector<std::uint32_t> offsets; // per vertex index, and one more
@@ -309,15 +202,11 @@ private:
         visit(source(incoming, g));
   }
 
-  // Where a vertex descriptor is an index (Surface_mesh), the rings beyond the
-  // first find the vertices gathered since the last start by their stamp in
-  // stamps_ (grown on demand and kept from vertex to vertex). Elsewhere, and on
-  // the 1-ring (a few neighbors, whose stamps would cost more in memory traffic
-  // than the search on a large mesh), a linear search of vertices_ from `from` on:
-  // neighborhoods hold tens of vertices, and the 1-ring of a non-manifold vertex
-  // may repeat a neighbor (a plain loop: std::find is not inlined and costs more
-  // than the search). At 3 rings the search took a fifth of the time of
-  // fit_degree(4).
+  // Where a vertex descriptor is an index, the rings beyond the first find the
+  // vertices gathered since the last start by their stamp in stamps_ (kept from
+  // vertex to vertex). Elsewhere, and on the 1-ring (whose stamps would cost more
+  // memory traffic than the search), a linear search of vertices_ from `from` on
+  // (the 1-ring of a non-manifold vertex may repeat a neighbor).
   void add_if_new(vertex_descriptor w, std::size_t from = 0)
   {
     if constexpr (indexed)
@@ -385,42 +274,10 @@ private:
   bool faces_are_triangles_ = false;
 };
 
-// The growth of the balls of the fits over a ball (ball_radius). From `radius`,
-// the ball grows by the factor ball_growth until it holds twice the fit's
-// `unknowns` vertices (fewer leave a least-squares fit close to interpolating the
-// noise that it is there to average), and then, while accepted() refuses its fit,
-// up to ball_growth_for_conditioning times that radius. grow(radius) gathers
-// the ball of that radius and returns whether vertices are left outside it (false:
-// it cannot grow); size() is the number of its vertices. Returns 1 plus the
-// number of growths, 0 where no ball was accepted.
-constexpr double ball_growth = 1.25;
-constexpr double ball_growth_for_conditioning = 2;
-
-template <typename Grow, typename Size, typename Accepted>
-int fit_in_growing_ball(double radius, int unknowns, const Grow& grow, const Size& size, const Accepted& accepted)
-{
-  int growths = 0;
-  bool more = grow(radius);
-  const auto grow_once = [&] {
-    radius *= ball_growth;
-    ++growths;
-    more = grow(radius);
-  };
-  while (size() < std::size_t(2 * unknowns) && more)
-    grow_once();
-  const double widest = ball_growth_for_conditioning * radius * (1 + 1e-9);
-  while (!(size() >= std::size_t(unknowns) && accepted())) {
-    if (!more || radius * ball_growth > widest)
-      return 0;
-    grow_once();
-  }
-  return growths + 1;
-}
-
-// k-rings over the neighbors of Tetrahedral_complex_stars, one ring at a time.
-// A stamp per vertex (allocated on first use, so that copying an unused
-// collector is cheap) replaces the surface collector's linear search, since
-// tetrahedral rings hold hundreds of vertices.
+// The rings over the neighbors of Tetrahedral_complex_stars, one at a time. A
+// stamp per vertex (allocated on first use, so that copying an unused collector
+// is cheap) replaces the surface collector's linear search: tetrahedral rings
+// hold hundreds of vertices.
 class Tetrahedral_ring_collector
 {
 public:
@@ -506,4 +363,4 @@ private:
 } // namespace Curvature_estimation
 } // namespace CGAL
 
-#endif // CGAL_CURVATURE_ESTIMATION_INTERNAL_NEIGHBORHOOD_H
+#endif // CGAL_CURVATURE_ESTIMATION_INTERNAL_RINGS_H
