@@ -10,6 +10,7 @@
 #include <CGAL/Curvature_estimation/internal/local_coordinates.h>
 #include <CGAL/Curvature_estimation/internal/symmetric_eigen.h>
 #include <CGAL/Curvature_estimation/internal/tangent_frame.h>
+#include <CGAL/Curvature_estimation/internal/taylor_fit/pairs.h>
 
 #include <Eigen/Core>
 
@@ -96,7 +97,7 @@ public:
   // Calls add(x, height, weight) for each finite sample: the vertex too where the
   // fit has an intercept (the others pass through it), over the rings or in the ball.
   template <typename Fit, typename Add>
-  void for_each_sample(const Sampling& sampling, const Add& add) const
+  CGAL_CURVATURE_ESTIMATION_INLINE void for_each_sample(const Sampling& sampling, const Add& add) const
   {
     const Eigen::Matrix<double, D, N> to_tangent = sampling.frame.tangents.transpose();
     const Vector& normal = sampling.frame.normal;
@@ -105,19 +106,35 @@ public:
         const Vector& q = offsets_[i];
         if (finite_[i] && neighborhood_.inside_ball(i)) {
           const double falloff = 1 - q.squaredNorm() / ball_squared_radius_;
-          add(Eigen::Matrix<double, D, 1>(to_tangent * q), normal.dot(q),
+          add(tangent_coordinates(to_tangent, q), normal.dot(q),
               sampling.weights == Sample_weights::smooth ? falloff * falloff : 1.0);
         }
       }
       return;
     }
-    const bool gaussian = sampling.weights == Sample_weights::gaussian;
     const std::size_t end = neighborhood_.ring_end(sampling.rings); // hoisted: add writes memory
-    for (std::size_t i = Fit::constant_term ? 0 : 1; i < end; ++i) {
-      const Vector& q = offsets_[i];
-      if (finite_[i])
-        add(Eigen::Matrix<double, D, 1>(to_tangent * q), normal.dot(q), gaussian ? std::exp(-q.squaredNorm()) : 1.0);
-    }
+    const auto ring_samples = [&](const auto& weight) {
+      for (std::size_t i = Fit::constant_term ? 0 : 1; i < end; ++i) {
+        const Vector& q = offsets_[i];
+        if (finite_[i])
+          add(tangent_coordinates(to_tangent, q), normal.dot(q), weight(q));
+      }
+    };
+    if (sampling.weights == Sample_weights::gaussian)
+      ring_samples([](const Vector& q) { return std::exp(-q.squaredNorm()); });
+    else
+      ring_samples([](const Vector&) { return 1.0; });
+  }
+
+  // A q for A = T^T, as Eigen's product sums it; in R^3 in place (Eigen's
+  // assignment is a call per sample there).
+  static CGAL_CURVATURE_ESTIMATION_INLINE Eigen::Matrix<double, D, 1>
+  tangent_coordinates(const Eigen::Matrix<double, D, N>& A, const Vector& q)
+  {
+    if constexpr (N == 3)
+      return {A(0, 0) * q[0] + A(0, 1) * q[1] + A(0, 2) * q[2], A(1, 0) * q[0] + A(1, 1) * q[1] + A(1, 2) * q[2]};
+    else
+      return A * q;
   }
 
   // The frame of the least-squares plane of the vertex and its rings up to
@@ -176,7 +193,7 @@ public:
 
   // Gathers rings up to `rings`; false when the component has fewer, on every
   // call (the collector counts the empty ring it met last).
-  bool reach(int rings)
+  CGAL_CURVATURE_ESTIMATION_INLINE bool reach(int rings)
   {
     while (!exhausted_ && neighborhood_.rings() < rings) {
       exhausted_ = !neighborhood_.extend();

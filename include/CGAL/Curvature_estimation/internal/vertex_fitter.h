@@ -53,6 +53,10 @@ public:
   Vertex_fitter(Neighborhood neighborhood, const Fit_settings& settings)
       : samples_(std::move(neighborhood))
       , settings_(settings)
+      , normal_attempts_{normal_attempts(settings, false), normal_attempts(settings, true)}
+      , start_gradient_attempts_(gradient_curvature_attempts(settings, settings.start_rings(false)))
+      , start_paraboloid_attempts_{paraboloid_attempts(settings, settings.start_rings(false)),
+                                   paraboloid_attempts(settings, settings.start_rings(true))}
   {}
 
   const Fit_settings& settings() const { return settings_; }
@@ -69,7 +73,7 @@ public:
     if (settings_.in_ball())
       result.estimate = ball_fit(unit);
     else if (settings_.degree == 2)
-      result.estimate = curvature_fit(paraboloid_attempts(settings_, start_rings()), unit, result);
+      result.estimate = curvature_fit(start_paraboloid_attempts_[samples_.on_border()], unit, result);
     else
       result.estimate = degree_fit(unit, false, result);
     return finished(result);
@@ -103,7 +107,7 @@ public:
     if (!(length > 0) || !std::isfinite(length) || !samples_.gather(v, settings_.ball_radius))
       return finished(result);
     result.estimate = normal != nullptr
-                        ? curvature_fit(paraboloid_attempts(settings_, start_rings()), *normal / length, result)
+                        ? curvature_fit(start_paraboloid_attempts_[samples_.on_border()], *normal / length, result)
                         : degree_two_curvature(v, method, result);
     return finished(result);
   }
@@ -196,13 +200,20 @@ private:
     if (!normal_fit)
       return Estimate();
     result.whitened = normal_fit.whitened;
+    const bool border = samples_.on_border();
     const int first = normal_fit.whitened ? (std::min)(normal_fit.reach, settings_.max_rings) : start_rings();
-    if (method == Vertex_normal_method::quadric_fit && !samples_.on_border()) {
-      const Estimate estimate = curvature_fit(gradient_curvature_attempts(settings_, first), normal, result);
+    const bool from_start = first == settings_.start_rings(border);
+    Fit_attempts other; // where the normal's fit started further out
+    if (method == Vertex_normal_method::quadric_fit && !border) {
+      if (!from_start)
+        other = gradient_curvature_attempts(settings_, first);
+      const Estimate estimate = curvature_fit(from_start ? start_gradient_attempts_ : other, normal, result);
       if (estimate.status != Estimation_status::not_estimable)
         return estimate;
     }
-    return curvature_fit(paraboloid_attempts(settings_, first), normal, result);
+    if (!from_start)
+      other = paraboloid_attempts(settings_, first);
+    return curvature_fit(from_start ? start_paraboloid_attempts_[border] : other, normal, result);
   }
 
   // The curvature of the first of `attempts` accepted in the frame of `normal`.
@@ -268,7 +279,7 @@ private:
   Acceptance fit_normal(Vector& normal)
   {
     bool corrected = false;
-    const Acceptance accepted = walk(Normal_kinds(), normal_attempts(settings_, samples_.on_border()), normal,
+    const Acceptance accepted = walk(Normal_kinds(), normal_attempts_[samples_.on_border()], normal,
                                      [&](auto& fit, const Sampling& sampling, int) {
                                        corrected = corrected_normal(sampling.frame, fit.gradient(), normal);
                                        return true;
@@ -374,7 +385,7 @@ private:
   }
 
   template <typename Fit>
-  bool fit_in_frame(Fit& fit, const Sampling& sampling, double max_condition) const
+  CGAL_CURVATURE_ESTIMATION_INLINE bool fit_in_frame(Fit& fit, const Sampling& sampling, double max_condition) const
   {
     fit.clear();
     samples_.template for_each_sample<Fit>(
@@ -384,6 +395,10 @@ private:
 
   Samples samples_;
   Fit_settings settings_;
+  // The attempts of the default's every vertex, made once: interior, border.
+  Fit_attempts normal_attempts_[2];
+  Fit_attempts start_gradient_attempts_; // interior vertices only
+  Fit_attempts start_paraboloid_attempts_[2];
 };
 
 } // namespace internal

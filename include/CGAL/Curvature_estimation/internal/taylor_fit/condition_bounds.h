@@ -17,7 +17,7 @@ namespace internal {
 
 // The largest column sum of absolute values of the leading n x n block of N.
 template <int n, typename Matrix>
-double one_norm(const Matrix& N)
+CGAL_CURVATURE_ESTIMATION_INLINE double one_norm(const Matrix& N)
 {
   double largest = 0;
   CGAL_CURVATURE_ESTIMATION_UNROLL
@@ -36,7 +36,7 @@ double one_norm(const Matrix& N)
 // (|L_ij| on the diagonal, -|L_ij| below it) has M^-1 >= |L^-1| entrywise
 // (Higham, Accuracy and Stability of Numerical Algorithms, section 8.3).
 template <int Size, int n>
-double comparison_bound(const typename Packed_cholesky<Size>::Triangle& L,
+CGAL_CURVATURE_ESTIMATION_INLINE double comparison_bound(const typename Packed_cholesky<Size>::Triangle& L,
                         const typename Packed_cholesky<Size>::Diagonal& inverse_diagonal)
 {
   double ones[n];

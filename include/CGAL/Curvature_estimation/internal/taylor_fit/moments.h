@@ -57,7 +57,7 @@ public:
   // Adds a sample to the moments from `first` on (those of the fit's own block,
   // or all) and to the height sums.
   template <int first>
-  void add(const Point& x, double height, double weight)
+  CGAL_CURVATURE_ESTIMATION_INLINE void add(const Point& x, double height, double weight)
   {
     if constexpr (paired_products) {
       constexpr int W = Tables::highest_degree;
@@ -84,7 +84,7 @@ public:
   }
 
   // Adds w h r(x) to the height sums alone (weighted_height = w h).
-  void add_heights(const Point& x, double weighted_height)
+  CGAL_CURVATURE_ESTIMATION_INLINE void add_heights(const Point& x, double weighted_height)
   {
     if constexpr (paired_products) {
       Pair lead[LastOrder], ys[LastOrder];

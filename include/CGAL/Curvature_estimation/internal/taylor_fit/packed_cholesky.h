@@ -33,7 +33,7 @@ struct Packed_cholesky
   // diagonal; above the diagonal, in a column's first pair, any finite number.
   // False if the block is not positive definite.
   template <int n, typename Matrix>
-  static bool factor(const Matrix& N, Triangle& L, Diagonal& inverse_diagonal)
+  CGAL_CURVATURE_ESTIMATION_INLINE static bool factor(const Matrix& N, Triangle& L, Diagonal& inverse_diagonal)
   {
     static_assert(n <= Size, "array too small");
     constexpr int pairs = (n + 1) / 2;
@@ -89,7 +89,7 @@ struct Packed_cholesky
   // entries of T off its diagonal read through `entry` (as they are to solve;
   // as -|L_ij| for the comparison matrix of condition_bounds.h).
   template <int n, typename Entry>
-  static void forward_substitution(const Triangle& L, const Diagonal& inverse_diagonal, const double (&b)[n],
+  CGAL_CURVATURE_ESTIMATION_INLINE static void forward_substitution(const Triangle& L, const Diagonal& inverse_diagonal, const double (&b)[n],
                                    Entry entry, double (&y)[n])
   {
     CGAL_CURVATURE_ESTIMATION_UNROLL
@@ -102,7 +102,7 @@ struct Packed_cholesky
     }
   }
   template <int n, typename Entry>
-  static void backward_substitution(const Triangle& L, const Diagonal& inverse_diagonal, const double (&b)[n],
+  CGAL_CURVATURE_ESTIMATION_INLINE static void backward_substitution(const Triangle& L, const Diagonal& inverse_diagonal, const double (&b)[n],
                                     Entry entry, double (&y)[n])
   {
     CGAL_CURVATURE_ESTIMATION_UNROLL
@@ -117,7 +117,7 @@ struct Packed_cholesky
 
   // x with N x = b: L y = b, then L^T x = y.
   template <int n>
-  static void solve(const Triangle& L, const Diagonal& inverse_diagonal, const double (&b)[n], double (&x)[n])
+  CGAL_CURVATURE_ESTIMATION_INLINE static void solve(const Triangle& L, const Diagonal& inverse_diagonal, const double (&b)[n], double (&x)[n])
   {
     const auto entry = [](double value) { return value; };
     double y[n];

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Pairs of doubles in one SSE2 register, and the unrolling of fixed-size loops,
-// for the Taylor fit's sums and factorisation (see the manual, "The Taylor fit").
+// Pairs of doubles in one SSE2 register, the unrolling of fixed-size loops and
+// the inlining of the fits' per-sample work (see the manual, "What a fit costs").
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_TAYLOR_FIT_PAIRS_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_TAYLOR_FIT_PAIRS_H
 
@@ -13,6 +13,14 @@
 #define CGAL_CURVATURE_ESTIMATION_UNROLL _Pragma("GCC unroll 32")
 #else
 #define CGAL_CURVATURE_ESTIMATION_UNROLL
+#endif
+
+// Inlining that GCC's heuristics decline where a fit type is used at many call
+// sites, in the per-sample and per-fit loops.
+#if defined(__GNUC__)
+#define CGAL_CURVATURE_ESTIMATION_INLINE inline __attribute__((always_inline))
+#else
+#define CGAL_CURVATURE_ESTIMATION_INLINE inline
 #endif
 
 namespace CGAL {

@@ -54,7 +54,7 @@ public:
   void clear() { sums_.reset(); }
 
   // One sample: a point of the tangent space, the height above it, its weight.
-  void add(const Point& x, double height, double weight = 1.0)
+  CGAL_CURVATURE_ESTIMATION_INLINE void add(const Point& x, double height, double weight = 1.0)
   {
     sums_.template add<Tables::first_own_moment>(x, height, weight);
   }
@@ -63,7 +63,7 @@ public:
 
   // The scaled test and, where it accepts, the fit: refused where the 1-norm
   // condition number exceeds `max_condition` (or the matrix is singular).
-  bool solve(double max_condition)
+  CGAL_CURVATURE_ESTIMATION_INLINE bool solve(double max_condition)
   {
     condition_ = std::numeric_limits<double>::infinity();
     condition_pending_ = false;
