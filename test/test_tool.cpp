@@ -5,7 +5,8 @@
 //  - accepted degenerate input: one row per file vertex, nan on failed rows;
 //  - the CSV and PLY formats, and the mean curvature of a sphere;
 //  - tetrahedral input (Medit .mesh + .sol): the CSV, and the curvature of graphs.
-// tools/CMakeLists.txt defines CE_CURVATURE_TOOL (the built tool's path).
+// tools/CMakeLists.txt defines CE_CURVATURE_TOOL (the built tool's path) and links the
+// tool's registry of methods.
 #include <gtest/gtest.h>
 
 #include <CGAL/Curvature_estimation/mean_edge_length.h>
@@ -16,6 +17,7 @@
 
 #include "kuhn_grid.h"
 #include "random_numbers.h"
+#include "registry.h"
 #include "surface_mesh_properties.h"
 #include "test_surfaces.h"
 
@@ -365,7 +367,13 @@ std::string binary_stl(const Indexed& m)
   return s;
 }
 
-const std::vector<std::string> methods = {"paraboloid", "curve-network", "gauss-map", "taubin", "chen-schmitt", "jet"};
+// Every method of the tool's registry.
+const std::vector<std::string> methods = [] {
+  std::vector<std::string> names;
+  for (const ce_tool::Method& m : ce_tool::methods())
+    names.push_back(m.name);
+  return names;
+}();
 
 // ---------------------------------------------------------------------------
 // Bad input

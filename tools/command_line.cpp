@@ -4,9 +4,12 @@
 #include "input_files.h"
 #include "tool_error.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <iostream>
+#include <iterator>
+#include <ostream>
 #include <system_error>
 #include <vector>
 
@@ -14,53 +17,154 @@ namespace ce_tool {
 
 namespace {
 
-constexpr const char* usage_text =
-  "usage: curvature [options] INPUT\n"
-  "Estimates curvature at the vertices of a surface mesh (INPUT: .off .ply .obj .stl), or of the\n"
-  "graph W = f(x, y, z) of a scalar field over a tetrahedral mesh (INPUT: Medit .mesh, f from .sol).\n"
-  "\n"
-  "options:\n"
-  "  -m, --method M     paraboloid (default) | curve-network | gauss-map | taubin | chen-schmitt | jet\n"
-  "                     (.mesh input: paraboloid only)\n"
-  "  -o, --output FILE  FILE.csv or FILE.ply (surfaces only); without it, print a summary only\n"
-  "      --rings N      neighborhood rings a vertex's estimate starts with (default 1;\n"
-  "                     paraboloid, gauss-map, taubin, chen-schmitt, jet, and .mesh input)\n"
-  "      --radius R     instead of rings, estimate over the ball of radius R about each vertex (the\n"
-  "                     mesh joined to it by edges inside the ball): R in mesh units, or Nx for N\n"
-  "                     mean edge lengths of INPUT (as in 4x); the ball grows where the fit needs\n"
-  "                     more vertices (status widened); paraboloid, jet and gauss-map; on .mesh\n"
-  "                     input the ball and the edges are in R^4, of the points (x, y, z, f);\n"
-  "                     not with --rings\n"
-  "      --order N      extrapolation order of curve-network, 1..4 (default 1)\n"
-  "      --fit-degree D degree of the paraboloid method's fit, 2..4 (default 2: Hamann's paraboloid;\n"
-  "                     3 and 4: Taylor fits over 2 and 3 rings, orders 2 and 3 on irregular meshes;\n"
-  "                     .mesh input: 2..3)\n"
-  "      --degree D     degree of the jet (jet only), 2..4 (default 2)\n"
-  "      --monge-degree D  degree of the Monge form (jet only), 2..D (default 2)\n"
-  "      --scalars FILE the Medit .sol holding f for a .mesh INPUT (default: INPUT with the\n"
-  "                     extension .sol, which must exist)\n"
-  "      --threads N    1: sequential; N > 1: at most N threads; 0: all cores (default 0)\n"
-  "      --color-by Q   PLY colours: k_max | k_min | mean (default) | gaussian\n"
-  "  -h, --help         print this help\n"
-  "\n"
-  "Surfaces. CSV: header k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,status,\n"
-  "then one row per vertex of INPUT in the file's order; status is ok, widened, fallback\n"
-  "(the documented fallback: curve-network, where there is no curve network or its curves\n"
-  "are no mesh lines, and jet, the paraboloid fit; paraboloid, the Gauss map where no ring\n"
-  "determines the fit) or failed, and a failed row has nan values. PLY: the input's\n"
-  "vertices and faces with these values as vertex properties (status as 0 ok, 1 widened,\n"
-  "2 failed, 3 fallback) and RGB colours.\n"
-  "OFF is ASCII with an OFF, COFF, NOFF or STOFF header; PLY (ASCII or binary), OBJ and STL\n"
-  "are read by CGAL after checks of what its readers do not survive.\n"
-  "\n"
-  "Tetrahedral meshes. INPUT is an ASCII Medit .mesh (Vertices and Tetrahedra are used, other\n"
-  "sections skipped); the .sol has SolAtVertices with one scalar (type 1) per vertex. The\n"
-  "curvatures are those of the hypersurface (x, y, z, f) of R^4 with the normal towards increasing f\n"
-  "(tetrahedra are oriented accordingly; curvature is positive where the graph bends away from\n"
-  "the normal, so a convex f has negative curvatures), by paraboloid fitting over the tetrahedral platelet.\n"
-  "CSV only: header k_1,k_2,k_3,mean,gaussian,status (k_1 >= k_2 >= k_3, mean = their average,\n"
-  "gaussian = their product), one row per vertex of the .mesh in its order; a vertex in no\n"
-  "tetrahedron is failed.\n";
+// The options that set an integer setting of the registry.
+struct Integer_option
+{
+  const char* flag;
+  const char* value_name; // in the help
+  Setting setting;
+  std::optional<int> Options::*value;
+  const char* help;          // after the range and default
+  const char* not_read_hint; // after the error that the method does not read it
+};
+const Integer_option integer_options[] = {
+  {"--rings", "N", Setting::rings, &Options::rings,
+   "neighborhood rings a vertex's estimate starts\nwith; it widens up to max(3, N)", ""},
+  {"--order", "N", Setting::extrapolation_order, &Options::order, "extrapolation order of the curve network", ""},
+  {"--fit-degree", "D", Setting::fit_degree, &Options::fit_degree,
+   "degree of the paraboloid method's fit: 2 is\nHamann's paraboloid; 3 and 4 are Taylor fits over 2 and 3 rings, of "
+   "orders\n"
+   "2 and 3 on irregular meshes; .mesh input: 2..3",
+   " (--degree is the jet's)"},
+  {"--degree", "D", Setting::jet_degree, &Options::degree, "degree of the jet", ""},
+  {"--monge-degree", "D", Setting::monge_degree, &Options::monge_degree, "degree of the Monge form, at most --degree",
+   ""},
+};
+
+// "a, b and c" (or "a, b or c" with `last` " or ").
+std::string join(const std::vector<std::string>& words, const char* last)
+{
+  std::string list;
+  for (std::size_t i = 0; i < words.size(); ++i)
+    list += (i == 0 ? "" : i + 1 == words.size() ? last : ", ") + words[i];
+  return list;
+}
+
+// The names of the methods `take` accepts.
+template <typename Take>
+std::vector<std::string> method_names(const Take& take)
+{
+  std::vector<std::string> names;
+  for (const Method& m : methods())
+    if (take(m))
+      names.push_back(m.name);
+  return names;
+}
+
+std::vector<std::string> readers(Setting setting)
+{
+  return method_names([&](const Method& m) { return m.reads_setting(setting); });
+}
+
+std::vector<std::string> tetrahedral_methods()
+{
+  return method_names([](const Method& m) { return m.tetrahedral; });
+}
+
+// Whether the method of tetrahedral input reads `setting`.
+bool tetrahedral_reads(Setting setting)
+{
+  for (const Method& m : methods())
+    if (m.tetrahedral && m.reads_setting(setting))
+      return true;
+  return false;
+}
+
+// The help of an option: its first line after the 21 columns of the flag, the rest indented.
+void print_option(std::ostream& out, const std::string& flag, const std::string& text)
+{
+  const std::string indent(21, ' ');
+  out << "  " << flag << std::string(flag.size() < 18 ? 19 - flag.size() : 1, ' ');
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t end = text.find('\n', start);
+    out << text.substr(start, end - start) << '\n';
+    if (end == std::string::npos)
+      return;
+    out << indent;
+    start = end + 1;
+  }
+}
+
+// Where a setting's option applies: "(paraboloid, jet and gauss-map; and .mesh input)".
+std::string applies_to(Setting setting)
+{
+  return "(" + join(readers(setting), ", ") + (tetrahedral_reads(setting) ? "; and .mesh input)" : ")");
+}
+
+void print_usage(std::ostream& out)
+{
+  out << "usage: curvature [options] INPUT\n"
+         "Estimates curvature at the vertices of a surface mesh (INPUT: .off .ply .obj .stl), or of the\n"
+         "graph W = f(x, y, z) of a scalar field over a tetrahedral mesh (INPUT: Medit .mesh, f from .sol).\n"
+         "\n"
+         "options:\n";
+  std::string method_list;
+  for (const Method& m : methods())
+    method_list +=
+      std::string(method_list.empty() ? "" : " | ") + m.name + (&m == &methods().front() ? " (default)" : "");
+  print_option(out, "-m, --method M",
+               method_list + "\n(.mesh input: " + join(tetrahedral_methods(), " or ") + " only)");
+  print_option(out, "-o, --output FILE", "FILE.csv or FILE.ply (surfaces only); without it, print a summary only");
+  for (const Integer_option& option : integer_options) {
+    const Integer_range r = integer_range(option.setting);
+    print_option(out, std::string("    ") + option.flag + " " + option.value_name,
+                 std::to_string(r.min) + ".." + std::to_string(r.max) + " (default " + std::to_string(r.default_value) +
+                   "): " + option.help + "\n" + applies_to(option.setting));
+  }
+  print_option(out, "    --radius R",
+               "instead of rings, estimate over the ball of radius R about each vertex (the\n"
+               "mesh joined to it by edges inside the ball): R in mesh units, or Nx for N\n"
+               "mean edge lengths of INPUT (as in 4x); the ball grows where the fit needs\n"
+               "more vertices (status widened); on .mesh input the ball and the edges are in\n"
+               "R^4, of the points (x, y, z, f); not with --rings\n" +
+                 applies_to(Setting::ball_radius));
+  out << "      --scalars FILE the Medit .sol holding f for a .mesh INPUT (default: INPUT with the\n"
+         "                     extension .sol, which must exist)\n"
+         "      --threads N    1: sequential; N > 1: at most N threads; 0: all cores (default 0)\n"
+         "      --color-by Q   PLY colours: k_max | k_min | mean (default) | gaussian\n"
+         "  -h, --help         print this help\n"
+         "\n"
+         "Surfaces. CSV: header k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,status,\n"
+         "then one row per vertex of INPUT in the file's order; status is ok, widened, fallback\n"
+         "(the documented fallback: curve-network, where there is no curve network or its curves\n"
+         "are no mesh lines, and jet, the paraboloid fit; paraboloid, the Gauss map where no ring\n"
+         "determines the fit) or failed, and a failed row has nan values. PLY: the input's\n"
+         "vertices and faces with these values as vertex properties (status as 0 ok, 1 widened,\n"
+         "2 failed, 3 fallback) and RGB colours.\n"
+         "OFF is ASCII with an OFF, COFF, NOFF or STOFF header; PLY (ASCII or binary), OBJ and STL\n"
+         "are read by CGAL after checks of what its readers do not survive.\n"
+         "\n"
+         "Tetrahedral meshes. INPUT is an ASCII Medit .mesh (Vertices and Tetrahedra are used, other\n"
+         "sections skipped); the .sol has SolAtVertices with one scalar (type 1) per vertex. The\n"
+         "curvatures are those of the hypersurface (x, y, z, f) of R^4 with the normal towards increasing f\n"
+         "(tetrahedra are oriented accordingly; curvature is positive where the graph bends away from\n"
+         "the normal, so a convex f has negative curvatures), by paraboloid fitting over the tetrahedral platelet.\n"
+         "CSV only: header k_1,k_2,k_3,mean,gaussian,status (k_1 >= k_2 >= k_3, mean = their average,\n"
+         "gaussian = their product), one row per vertex of the .mesh in its order; a vertex in no\n"
+         "tetrahedron is failed.\n";
+}
+
+// Fails unless the method of `o` reads `setting`, which `flag` set.
+void check_read(const Options& o, const std::string& flag, Setting setting, const std::string& hint)
+{
+  if (o.method->reads_setting(setting))
+    return;
+  const std::vector<std::string> names = readers(setting);
+  if (names.size() == 1)
+    fail(flag + " applies to the " + names[0] + " method only" + hint, 2);
+  fail(flag + " applies to the " + join(names, " and ") + " methods only, not to '" + o.method->name + "'" + hint, 2);
+}
 
 int parse_int(const std::string& option, const std::string& text, int min_value, int max_value)
 {
@@ -105,42 +209,26 @@ std::optional<Options> parse_arguments(int argc, char** argv)
         fail("option " + name + " needs a value (see curvature --help)", 2);
       return argv[++i];
     };
-    if (arg == "-h" || arg == "--help") {
-      std::cout << usage_text;
+    const auto integer = std::find_if(std::begin(integer_options), std::end(integer_options),
+                                      [&](const Integer_option& option) { return arg == option.flag; });
+    if (integer != std::end(integer_options)) {
+      const Integer_range r = integer_range(integer->setting);
+      o.*(integer->value) = parse_int(arg, value(arg), r.min, r.max);
+    } else if (arg == "-h" || arg == "--help") {
+      print_usage(std::cout);
       return std::nullopt;
     } else if (arg == "-m" || arg == "--method") {
       const std::string m = value(arg);
-      o.method_name = m;
-      if (m == "paraboloid")
-        o.method = Method::paraboloid;
-      else if (m == "curve-network")
-        o.method = Method::curve_network;
-      else if (m == "gauss-map")
-        o.method = Method::gauss_map;
-      else if (m == "taubin")
-        o.method = Method::taubin;
-      else if (m == "chen-schmitt")
-        o.method = Method::chen_schmitt;
-      else if (m == "jet")
-        o.method = Method::jet;
-      else
-        fail("unknown method '" + m + "' (expected paraboloid, curve-network, gauss-map, taubin, chen-schmitt or jet)",
+      o.method = find_method(m);
+      if (!o.method) {
+        fail("unknown method '" + m + "' (expected " + join(method_names([](const Method&) { return true; }), " or ") +
+               ")",
              2);
+      }
     } else if (arg == "-o" || arg == "--output") {
       o.output = value(arg);
-    } else if (arg == "--rings") {
-      o.rings = parse_int(arg, value(arg), 1, 100);
     } else if (arg == "--radius") {
       o.radius = parse_radius(arg, value(arg));
-    } else if (arg == "--order") {
-      o.order = parse_int(arg, value(arg), 1, 4);
-    } else if (arg == "--fit-degree") {
-      o.fit_degree = parse_int(arg, value(arg), 2, 4);
-    } else if (arg == "--degree") {
-      // Jet degree 1 is a plane: CGAL's Monge form needs degree 2 at least.
-      o.degree = parse_int(arg, value(arg), 2, 4);
-    } else if (arg == "--monge-degree") {
-      o.monge_degree = parse_int(arg, value(arg), 2, 4);
     } else if (arg == "--scalars") {
       o.scalars = value(arg);
     } else if (arg == "--threads") {
@@ -169,20 +257,19 @@ std::optional<Options> parse_arguments(int argc, char** argv)
     fail("more than one input file given ('" + positional[0] + "', '" + positional[1] + "')", 2);
   o.input = positional[0];
 
-  if (o.order && o.method != Method::curve_network)
-    fail("--order applies to the curve-network method only", 2);
-  if (o.fit_degree && o.method != Method::paraboloid)
-    fail("--fit-degree applies to the paraboloid method only (--degree is the jet's)", 2);
-  if ((o.degree || o.monge_degree) && o.method != Method::jet)
-    fail(std::string(o.degree ? "--degree" : "--monge-degree") + " applies to the jet method only", 2);
-  if (o.monge_degree && *o.monge_degree > o.degree.value_or(2))
+  for (const Integer_option& option : integer_options)
+    if (o.*(option.value))
+      check_read(o, option.flag, option.setting, option.not_read_hint);
+  if (o.monge_degree && *o.monge_degree > o.degree.value_or(integer_range(Setting::jet_degree).default_value))
     fail("--monge-degree " + std::to_string(*o.monge_degree) + " exceeds the jet degree " +
-           std::to_string(o.degree.value_or(2)) + " (see --degree)",
+           std::to_string(o.degree.value_or(integer_range(Setting::jet_degree).default_value)) + " (see --degree)",
          2);
   o.tetrahedral = lower_extension(o.input) == ".mesh";
   if (o.tetrahedral) {
-    if (o.method != Method::paraboloid)
-      fail("method '" + o.method_name + "' does not apply to tetrahedral input (.mesh): use paraboloid", 2);
+    if (!o.method->tetrahedral)
+      fail(std::string("method '") + o.method->name + "' does not apply to tetrahedral input (.mesh): use " +
+             join(tetrahedral_methods(), " or "),
+           2);
     if (o.fit_degree.value_or(2) > 3)
       fail("--fit-degree 4 is for surfaces: tetrahedral input (.mesh) takes 2 or 3", 2);
     if (!o.output.empty() && lower_extension(o.output) == ".ply")
@@ -191,13 +278,10 @@ std::optional<Options> parse_arguments(int argc, char** argv)
     fail("--scalars applies to tetrahedral input (.mesh) only", 2);
   }
   if (o.radius) {
-    if (o.method != Method::paraboloid && o.method != Method::jet && o.method != Method::gauss_map)
-      fail("--radius applies to the paraboloid, jet and gauss-map methods only, not to '" + o.method_name + "'", 2);
+    check_read(o, "--radius", Setting::ball_radius, "");
     if (o.rings)
       fail("--radius and --rings exclude each other: a neighborhood is a ball or rings", 2);
   }
-  if (o.rings && o.method == Method::curve_network)
-    fail("--rings does not apply to the curve-network method (it uses mesh lines; see --order)", 2);
   if (!o.output.empty()) {
     const std::string ext = lower_extension(o.output);
     if (ext != ".csv" && ext != ".ply")

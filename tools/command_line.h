@@ -3,20 +3,13 @@
 #ifndef CE_TOOLS_COMMAND_LINE_H
 #define CE_TOOLS_COMMAND_LINE_H
 
+#include "registry.h"
+
 #include <optional>
 #include <string>
 
 namespace ce_tool {
 
-enum class Method
-{
-  paraboloid,
-  curve_network,
-  gauss_map,
-  taubin,
-  chen_schmitt,
-  jet
-};
 enum class Quantity
 {
   k_max,
@@ -37,13 +30,13 @@ struct Options
 {
   std::string input;
   std::string output;
-  Method method = Method::paraboloid;
-  std::string method_name = "paraboloid";
+  const Method* method = &methods().front(); // -m: a method of the registry
+  // The options of the registry's settings, checked against the method's.
   std::optional<int> rings;
-  std::optional<Radius> radius; // paraboloid and jet, surfaces only
-  std::optional<int> order;
-  std::optional<int> fit_degree;           // paraboloid
-  std::optional<int> degree, monge_degree; // jet
+  std::optional<Radius> radius;
+  std::optional<int> order;                // extrapolation_order
+  std::optional<int> fit_degree;           // fit_degree
+  std::optional<int> degree, monge_degree; // jet_degree, monge_degree
   std::string scalars;
   bool tetrahedral = false; // INPUT is a Medit .mesh
   int threads = 0;

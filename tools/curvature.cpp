@@ -3,7 +3,7 @@
 // the graph W = f(x, y, z) of a scalar field over a tetrahedral mesh.
 //
 //   curvature [options] INPUT
-//     -m, --method  paraboloid | curve-network | gauss-map | taubin | chen-schmitt | jet
+//     -m, --method  a method of the registry (registry.cpp; --help lists them)
 //     -o, --output  FILE.csv | FILE.ply     (without it: print a summary only)
 //     --rings N --radius R|Nx --order N --fit-degree D --degree D --monge-degree D --threads N
 //     --color-by Q --scalars FILE.sol
@@ -13,7 +13,7 @@
 // become a mesh. Errors: one line on stderr, non-zero exit, no output file.
 //
 // main only: the parts are in this directory (command_line, surface_input,
-// soup_repair, surface_estimation, tetrahedral, writers, atomic_file, summary).
+// soup_repair, registry, surface_estimation, tetrahedral, writers, atomic_file, summary).
 #include "atomic_file.h"
 #include "command_line.h"
 #include "input_files.h"

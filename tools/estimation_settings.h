@@ -1,25 +1,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// What every estimation of the tool shares: the concurrency --threads asks for,
-// the rings --rings asks for, the radius --radius asks for and the mean size of
-// its balls, and the library's exceptions as the tool's errors.
+// What every estimation of the tool shares: its time, the library's exceptions as
+// the tool's errors, the rings --rings asks for, the radius --radius asks for and
+// the mean size of its balls.
 #ifndef CE_TOOLS_ESTIMATION_SETTINGS_H
 #define CE_TOOLS_ESTIMATION_SETTINGS_H
 
 #include "command_line.h"
 #include "tool_error.h"
 
-#include <CGAL/tags.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/global_control.h>
-#endif
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <exception>
-#include <memory>
 #include <new>
 #include <sstream>
 #include <stdexcept>
@@ -27,26 +20,14 @@
 
 namespace ce_tool {
 
-// Runs `estimate(tag)` with the concurrency tag --threads asks for, and turns
-// the library's exceptions into the tool's errors; returns the time it took, in seconds.
+// Runs `estimate()` and turns the library's exceptions into the tool's errors;
+// returns the time it took, in seconds.
 template <typename Estimate>
-double run_with_threads(int threads, Estimate estimate)
+double timed_estimate(Estimate estimate)
 {
   const auto start = std::chrono::steady_clock::now();
   try {
-    if (threads == 1) {
-      estimate(CGAL::Sequential_tag());
-    } else {
-#ifdef CGAL_LINKED_WITH_TBB
-      std::unique_ptr<tbb::global_control> limit;
-      if (threads > 1)
-        limit =
-          std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
-      estimate(CGAL::Parallel_tag());
-#else
-      estimate(CGAL::Sequential_tag());
-#endif
-    }
+    estimate();
   } catch (const std::invalid_argument& e) {
     fail(std::string("invalid parameter: ") + e.what(), 2);
   } catch (const std::bad_alloc&) {
@@ -57,13 +38,10 @@ double run_with_threads(int threads, Estimate estimate)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// --rings N: start on N rings, widen up to max(3, N), as for every method with rings.
-template <typename NamedParameters>
-auto with_rings(const Options& o, const NamedParameters& np)
-{
-  const int rings = o.rings.value_or(1);
-  return np.neighborhood_rings(rings).max_neighborhood_rings(std::max(3, rings));
-}
+// --rings N: start on N rings (default 1) and widen up to max(3, N), as for every
+// method with rings (jet fitting too, whose own default widens further).
+inline int rings(const Options& o) { return o.rings.value_or(1); }
+inline int max_rings(const Options& o) { return std::max(3, rings(o)); }
 
 // --radius in the input's units: R, or N times `mean_edge_length` for Nx. Fails
 // where that is no positive finite length (1e308x of a mesh whose edges are long).

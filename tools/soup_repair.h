@@ -9,14 +9,9 @@
 #include "kernel.h"
 #include "surface_input.h"
 
-#include <CGAL/Surface_mesh.h>
-
 #include <vector>
 
 namespace ce_tool {
-
-using Mesh = CGAL::Surface_mesh<Point>;
-using V = Mesh::Vertex_index;
 
 // Builds the mesh from a repaired copy of the soup; file_to_mesh[i] is the mesh
 // vertex of the file's vertex i (null when the vertex is in no usable face).

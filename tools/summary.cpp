@@ -83,7 +83,7 @@ void print_surface_summary(const Options& o, const Soup& soup, const Mesh& mesh,
   std::cout << "input: " << o.input << '\n'
             << "vertices: " << soup.points.size() << " in the file (" << num_vertices(mesh) << " in the mesh, "
             << num_faces(mesh) << " faces)\n"
-            << "method: " << o.method_name << '\n';
+            << "method: " << o.method->name << '\n';
   if (rows.ball_radius > 0)
     print_ball(rows.ball_radius, rows.mean_edge_length, mean_ball_size(mesh, rows.ball_radius), num_vertices(mesh));
   print_estimates(rows, num_vertices(mesh), rows.seconds);
@@ -95,7 +95,7 @@ void print_tetrahedral_summary(const Options& o, const Tetrahedral_input& input,
   std::cout << "input: " << o.input << '\n'
             << "vertices: " << vertices << '\n'
             << "tetrahedra: " << input.mesh.cells.size() << '\n'
-            << "method: " << o.method_name << " (hypersurface of R^4)\n";
+            << "method: " << o.method->name << " (hypersurface of R^4)\n";
   if (estimates.ball_radius > 0)
     print_ball(estimates.ball_radius, estimates.mean_edge_length, estimates.ball_size, vertices);
   print_estimates(estimates.rows, vertices, estimates.seconds);

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Surface estimation: which estimator --method picks, with which named
-// parameters, and its outputs as one row per vertex of the input file.
+// Surface estimation: the registry's method --method picks, with the settings
+// of the options, and its outputs as one row per vertex of the input file.
 #ifndef CE_TOOLS_SURFACE_ESTIMATION_H
 #define CE_TOOLS_SURFACE_ESTIMATION_H
 
 #include "command_line.h"
 #include "estimation_settings.h"
 #include "kernel.h"
-#include "soup_repair.h"
+#include "registry.h"
 
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 
@@ -34,9 +34,7 @@ struct Row
 // (file_to_mesh from build_mesh) or not estimable.
 struct Surface_estimates
 {
-  Mesh::Property_map<V, double> H, K;
-  Mesh::Property_map<V, CE::Principal_curvatures_and_directions<Kernel>> pcd;
-  Mesh::Property_map<V, CE::Estimation_status> status;
+  Outputs maps;
   std::vector<V> file_to_mesh;
   double seconds = 0; // the estimator's time
   // With --radius: the balls' radius in mesh units and the mean edge length of the
@@ -47,7 +45,7 @@ struct Surface_estimates
   Row operator[](std::size_t i) const;
 };
 
-// Runs the estimator --method picks; its outputs are property maps added to `mesh`.
+// Runs the method --method picks; its outputs are property maps added to `mesh`.
 // --radius Nx is N times the mean edge length of `mesh`.
 Surface_estimates estimate(const Options& o, Mesh& mesh, std::vector<V> file_to_mesh);
 

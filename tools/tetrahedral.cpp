@@ -146,11 +146,15 @@ Tetrahedral_estimates estimate_tetrahedral(const Options& o, const Tetrahedral_i
     e.ball_radius = ball_radius(*o.radius, e.mean_edge_length);
     e.ball_size = graph.mean_ball_size(e.ball_radius);
   }
-  e.seconds = run_with_threads(o.threads, [&](auto tag) {
-    if (e.ball_radius > 0)
-      CE::hypersurface_paraboloid_fitting_curvatures<decltype(tag)>(input.mesh, np.ball_radius(e.ball_radius));
-    else
-      CE::hypersurface_paraboloid_fitting_curvatures<decltype(tag)>(input.mesh, with_rings(o, np));
+  e.seconds = timed_estimate([&] {
+    with_threads(o.threads, [&](auto tag) {
+      using Tag = decltype(tag);
+      if (e.ball_radius > 0)
+        CE::hypersurface_paraboloid_fitting_curvatures<Tag>(input.mesh, np.ball_radius(e.ball_radius));
+      else
+        CE::hypersurface_paraboloid_fitting_curvatures<Tag>(
+          input.mesh, np.neighborhood_rings(rings(o)).max_neighborhood_rings(max_rings(o)));
+    });
   });
 
   e.rows.resize(n);
