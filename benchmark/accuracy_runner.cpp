@@ -3,6 +3,7 @@
 // written as CSV for benchmark/make_report.py.
 //
 //   ./build/benchmark/accuracy_runner [--quick] [--out DIR]     (DIR defaults to .)
+//   ./build/benchmark/accuracy_runner --list        (prints DIR/estimators.json, below)
 //
 // Surfaces: five of Hamann's graph functions on [-1,1]^2, a sphere, a torus and an
 // ellipsoid, each as a regular mesh (grid, icosphere, parameter grid) and as an
@@ -38,6 +39,8 @@
 // 1-ring, `paraboloid`, and over balls of 2 and 6 mean edge lengths, `ball_2h` and
 // `ball_6h`) and DIR/bunny_faces.csv (three vertex indices per row) for the report's pictures.
 // DIR/cgal_version.txt: the CGAL this runner was compiled against (CGAL_VERSION_STR).
+// DIR/estimators.json: the estimators in report order, with their labels (and those of the
+// noise section), for make_report.py (write_estimators_json in estimators.h).
 #include "estimators.h"
 
 #include "estimator_runs.h"
@@ -63,8 +66,17 @@
 namespace {
 
 using namespace ce_bench;
-// Results do not depend on the tag (the estimators guarantee it); parallel is just faster.
-using Tag = CGAL::Parallel_if_available_tag;
+// Results do not depend on the threads (the estimators guarantee it); all cores are just faster.
+constexpr int all_threads = 0;
+
+// Runs `e` with every output requested: its estimates in vertex order.
+ce_test::Estimates<Kernel> estimates(const Estimator& e, const Mesh& mesh, Normal_map given_normals, double h,
+                                     int threads)
+{
+  return ce_test::run_with_all_outputs<Kernel>(
+    mesh, [&](const Mesh& m, const auto& np) { run(e, m, given_normals, h, outputs_of(np), threads); },
+    CE::parameters::default_values());
+}
 
 struct Case
 {
@@ -151,7 +163,7 @@ std::vector<Series> all_series()
   return series;
 }
 
-void write_rows(std::ostream& out, const Case& c, double h, const Estimator_info& estimator,
+void write_rows(std::ostream& out, const Case& c, double h, const Estimator& estimator,
                 const ce_test::Estimates<Kernel>& e)
 {
   for (const bool interior_only : {false, true}) {
@@ -167,12 +179,12 @@ void write_rows(std::ostream& out, const Case& c, double h, const Estimator_info
     };
     const ce_test::Curvature_errors errors = ce_test::curvature_errors(e, c.exact, include);
     const std::tuple<const char*, unsigned, const ce_test::Error_accumulator*> quantities[] = {
-      {"k_max", gives_principal, &errors.k_max},
-      {"k_min", gives_principal, &errors.k_min},
-      {"H", gives_H, &errors.mean},
-      {"K", gives_K, &errors.gaussian}};
+      {"k_max", ce_tool::gives_principal, &errors.k_max},
+      {"k_min", ce_tool::gives_principal, &errors.k_min},
+      {"H", ce_tool::gives_H, &errors.mean},
+      {"K", ce_tool::gives_K, &errors.gaussian}};
     for (const auto& [quantity, given_by, accumulator] : quantities) {
-      if (!(estimator.quantities & given_by))
+      if (!(estimator.quantities() & given_by))
         continue;
       const ce_test::Error_stats s = accumulator->stats();
       out << c.surface << ',' << c.mesh << ',' << c.level << ',' << c.soup.points.size() << ',' << h << ','
@@ -203,33 +215,28 @@ void run_accuracy(bool quick, const std::string& path)
       Mesh mesh = ce_test::to_mesh<Mesh>(c.soup);
       const double h = ce_test::mean_edge_length(c.soup);
       Normal_map exact_normals = ce_test::exact_normal_map<Kernel>(mesh, c.exact);
-      for (const Estimator_info& info : estimators()) {
-        const ce_test::Estimates<Kernel> e = ce_test::run_with_all_outputs<Kernel>(
-          mesh, [&](const Mesh& m, const auto& np) { run<Tag>(info.id, m, exact_normals, h, np); },
-          CE::parameters::default_values());
-        write_rows(out, c, h, info, e);
-      }
+      for (const Estimator& e : estimators())
+        write_rows(out, c, h, e, estimates(e, mesh, exact_normals, h, all_threads));
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::fprintf(stderr, "accuracy: %-22s %-9s level %d: %7zu vertices, %6.2f s\n", c.surface.c_str(), c.mesh.c_str(),
                    level, c.soup.points.size(), seconds);
     }
 }
 
-// Runs `estimate(mesh, np)` with every output requested: its estimates, and the wall
-// time of the call in ns per vertex.
-template <typename Estimate>
-std::pair<ce_test::Estimates<Kernel>, double> timed_run(const Mesh& mesh, const Estimate& estimate)
+// Runs `e` on one thread with every output requested: its estimates, and the wall time
+// of the call in ns per vertex.
+std::pair<ce_test::Estimates<Kernel>, double> timed_run(const Estimator& e, const Mesh& mesh, double h)
 {
   double seconds = 0;
-  ce_test::Estimates<Kernel> e = ce_test::run_with_all_outputs<Kernel>(
+  ce_test::Estimates<Kernel> estimates = ce_test::run_with_all_outputs<Kernel>(
     mesh,
     [&](const Mesh& m, const auto& np) {
       const auto start = std::chrono::steady_clock::now();
-      estimate(m, np);
+      run(e, m, Normal_map(), h, outputs_of(np), 1); // no given normals read
       seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     },
     CE::parameters::default_values());
-  return {std::move(e), 1e9 * seconds / double(mesh.number_of_vertices())};
+  return {std::move(estimates), 1e9 * seconds / double(mesh.number_of_vertices())};
 }
 
 // The mean number of vertices in the balls of radius `radius` of the vertices of `mesh`,
@@ -269,17 +276,13 @@ void run_noise(bool quick, const std::string& path)
           << radius_edges << ',' << ball_vertices << ',' << H.rms << ',' << H.max << ',' << errors.gaussian.stats().rms
           << ',' << widened << ',' << timed.second << '\n';
     };
-    for (const Estimator_info& info : estimators())
-      if (info.id == Estimator::paraboloid || info.id == Estimator::gauss_map)
-        write(info.name, "", "", timed_run(mesh, [&](const Mesh& m, const auto& np) {
-                run<CGAL::Sequential_tag>(info.id, m, Normal_map(), h, np); // no given normals read
-              }));
+    for (const char* reference : {"paraboloid", "gauss_map"})
+      write(reference, "", "", timed_run(estimator(reference), mesh, h));
     for (const int edges : {1, 2, 3, 4, 6, 8}) {
       const std::string ball_vertices = std::to_string(mean_ball_size(mesh, edges * h));
-      for (const Ball_estimator_info& info : ball_estimators())
-        write(info.name, std::to_string(edges), ball_vertices, timed_run(mesh, [&](const Mesh& m, const auto& np) {
-                run_in_ball<CGAL::Sequential_tag>(info.id, m, edges * h, np);
-              }));
+      for (const Ball_estimator& b : ball_estimators())
+        write(b.estimator.name.c_str(), std::to_string(edges), ball_vertices,
+              timed_run(in_ball(b.estimator, edges), mesh, h));
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::fprintf(stderr, "noise: ellipsoid, seed %u: %7zu vertices, %6.2f s\n", unsigned(seed),
@@ -319,14 +322,11 @@ void run_bunny(const std::string& dir)
   const double h = CE::mean_edge_length(mesh);
   std::vector<std::string> names, ball_names;
   std::vector<std::vector<double>> columns, ball_columns;
-  for (const Estimator_info& info : estimators())
-    if (info.quantities & gives_H) {
-      names.push_back(info.name);
-      columns.push_back(ce_test::run_with_all_outputs<Kernel>(
-                          mesh, [&](const Mesh& m, const auto& np) { run<Tag>(info.id, m, normals, h, np); },
-                          CE::parameters::default_values())
-                          .mean);
-      if (info.id == Estimator::paraboloid) { // the default fit over its 1-ring, then over balls
+  for (const Estimator& e : estimators())
+    if (e.quantities() & ce_tool::gives_H) {
+      names.push_back(e.name);
+      columns.push_back(estimates(e, mesh, normals, h, all_threads).mean);
+      if (e.name == "paraboloid") { // the default fit over its 1-ring, then over balls
         ball_names.push_back(names.back());
         ball_columns.push_back(columns.back());
       }
@@ -335,11 +335,7 @@ void run_bunny(const std::string& dir)
 
   for (const int edges : {2, 6}) {
     ball_names.push_back("ball_" + std::to_string(edges) + "h");
-    ball_columns.push_back(
-      ce_test::run_with_all_outputs<Kernel>(
-        mesh, [&](const Mesh& m, const auto& np) { run_in_ball<Tag>(Ball_estimator::paraboloid, m, edges * h, np); },
-        CE::parameters::default_values())
-        .mean);
+    ball_columns.push_back(estimates(in_ball(estimator("paraboloid"), edges), mesh, normals, h, all_threads).mean);
   }
   write_vertex_columns(dir + "/bunny_ball_mean_curvature.csv", mesh, ball_names, ball_columns);
 
@@ -369,8 +365,11 @@ int main(int argc, char** argv)
       quick = true;
     else if (std::strcmp(argv[i], "--out") == 0 && i + 1 < argc)
       dir = argv[++i];
-    else {
-      std::cerr << "usage: accuracy_runner [--quick] [--out DIR]\n";
+    else if (std::strcmp(argv[i], "--list") == 0) {
+      write_estimators_json(std::cout);
+      return 0;
+    } else {
+      std::cerr << "usage: accuracy_runner [--quick] [--out DIR] | --list\n";
       return 2;
     }
   }
@@ -378,6 +377,10 @@ int main(int argc, char** argv)
     std::ofstream version(dir + "/cgal_version.txt");
     if (!(version << CGAL_VERSION_STR << '\n'))
       throw std::runtime_error("cannot write " + dir + "/cgal_version.txt");
+    std::ofstream list(dir + "/estimators.json");
+    write_estimators_json(list);
+    if (!list)
+      throw std::runtime_error("cannot write " + dir + "/estimators.json");
     run_accuracy(quick, dir + "/accuracy.csv");
     run_noise(quick, dir + "/noise_radius.csv");
     run_bunny(dir);

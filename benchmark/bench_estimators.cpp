@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Speed of every estimator of benchmark/estimators.h, in ns per vertex (the
 // `time_per_vertex` counter: seconds per vertex, e.g. 95n), and heap allocations per
-// vertex and call (`allocations_per_vertex`, all threads) and the peak of the heap the
-// calls held at once, per vertex (`peak_heap_bytes_per_vertex`), on Surface_mesh:
+// vertex and call (`allocations_per_vertex`, all threads), the peak of the heap the
+// calls held at once, per vertex (`peak_heap_bytes_per_vertex`), and the minor page faults
+// per vertex and call (`page_faults_per_vertex`), on Surface_mesh:
 // grids of .1(cos pi x + cos pi y) with about 10k, 100k and 1M vertices and CGAL's
 // bunny, armadillo, elephant and Chinese dragon; sequential and parallel (TBB,
 // at most 2 threads; CGAL 6's estimators have no parallel version: sequential only).
@@ -17,8 +18,6 @@
 // and most cases are repeated 3 times; the full run takes about 15 minutes on two cores
 // (a few more with CGAL 6's estimators).
 #include "estimators.h"
-
-#include "test_surfaces.h"
 
 #include <benchmark/benchmark.h>
 
@@ -150,36 +149,29 @@ using namespace ce_bench;
 // The report's targets speak of two cores: parallel runs use at most 2 threads.
 constexpr int parallel_threads = 2;
 
-struct Input
-{
-  std::string name; // grid_<n> (n x n vertices) or a real mesh's name
-  int grid_n;       // 0 for a real mesh
-};
-
 struct Built_input
 {
   Mesh mesh;
   double h; // its mean edge length
 };
 
-// Inputs are built on first use and kept for the process: the 1M-vertex grid takes
-// seconds to build, longer than the fast estimators take to run on it.
-Built_input& built(const Input& input)
+// Inputs (speed_input) are built on first use and kept for the process: the 1M-vertex
+// grid takes seconds to build, longer than the fast estimators take to run on it.
+Built_input& built(const std::string& input)
 {
   static std::map<std::string, std::unique_ptr<Built_input>> cache;
-  std::unique_ptr<Built_input>& b = cache[input.name];
+  std::unique_ptr<Built_input>& b = cache[input];
   if (!b) {
-    Mesh mesh = input.grid_n > 0 ? ce_test::to_mesh<Mesh>(ce_test::grid_graph_soup(
-                                     ce_test::hamann_table1_functions()[8], static_cast<std::size_t>(input.grid_n)))
-                                 : read_real_mesh(input.name);
+    Mesh mesh = speed_input(input);
     const double h = CE::mean_edge_length(mesh);
     b = std::make_unique<Built_input>(Built_input{std::move(mesh), h});
   }
   return *b;
 }
 
-template <typename ConcurrencyTag>
-void time_estimator(benchmark::State& state, Estimator estimator, const Input& input)
+// `threads` as ce_tool::run takes it: 1 for the sequential runs, 0 for the parallel ones
+// (as many threads as main allows).
+void time_estimator(benchmark::State& state, const Estimator& estimator, const std::string& input, int threads)
 {
   Built_input* b = nullptr;
   try {
@@ -189,99 +181,73 @@ void time_estimator(benchmark::State& state, Estimator estimator, const Input& i
     return;
   }
   Mesh* mesh = &b->mesh;
-  auto mean = mesh->add_property_map<vertex_descriptor, double>("v:bench_H").first;
-  auto gaussian = mesh->add_property_map<vertex_descriptor, double>("v:bench_K").first;
-  auto principal =
-    mesh->add_property_map<vertex_descriptor, CE::Principal_curvatures_and_directions<Kernel>>("v:bench_pcd").first;
+  ce_tool::Outputs outputs = ce_tool::add_outputs(*mesh, "v:bench_");
   Normal_map given = mesh->add_property_map<vertex_descriptor, Kernel::Vector_3>("v:bench_normal").first;
-  if (estimator == Estimator::paraboloid_given_normals)
+  if (estimator.given_normals)
     CE::estimate_vertex_normals(*mesh, given); // not timed: "given" means someone else computed them
 
-  const auto outputs = CE::parameters::vertex_mean_curvature_map(mean)
-                         .vertex_Gaussian_curvature_map(gaussian)
-                         .vertex_principal_curvatures_and_directions_map(principal);
   const unsigned long long allocations_before = heap_allocations();
+  const long faults_before = minor_page_faults();
   long long peak_heap = 0; // of the calls, the largest
   for (auto _ : state) {
     reset_peak_heap();
-    run<ConcurrencyTag>(estimator, *mesh, given, b->h, outputs);
+    run(estimator, *mesh, given, b->h, outputs, threads);
     peak_heap = std::max(peak_heap, peak_heap_bytes());
-    benchmark::DoNotOptimize(mean[*vertices(*mesh).begin()]);
+    benchmark::DoNotOptimize(outputs.H[*vertices(*mesh).begin()]);
     benchmark::ClobberMemory();
   }
   const double n = static_cast<double>(num_vertices(*mesh));
   state.counters["allocations_per_vertex"] =
     double(heap_allocations() - allocations_before) / (n * double(state.iterations()));
+  state.counters["page_faults_per_vertex"] =
+    double(minor_page_faults() - faults_before) / (n * double(state.iterations()));
   // Heap beyond the mesh and the output maps (allocated above): the estimator's temporaries.
   state.counters["peak_heap_bytes_per_vertex"] = double(peak_heap) / n;
   state.counters["vertices"] = n;
-  state.counters["threads"] = std::is_same<ConcurrencyTag, CGAL::Sequential_tag>::value ? 1 : parallel_threads;
+  state.counters["threads"] = threads == 1 ? 1 : parallel_threads;
   // Seconds per vertex, printed with an SI prefix (e.g. 95n = 95 ns).
   state.counters["time_per_vertex"] =
     benchmark::Counter(n, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
-  mesh->remove_property_map(mean);
-  mesh->remove_property_map(gaussian);
-  mesh->remove_property_map(principal);
+  ce_tool::remove_outputs(*mesh, outputs);
   mesh->remove_property_map(given);
 }
 
 // The machine is shared: make_report.py takes the best of the repetitions, the least
-// disturbed run. These estimators run once: jet fitting with 1 ring and with d = 4 takes
-// minutes on the 1M grid, ICC with a ball radius and our fit over a ball of 8 edges
-// seconds. The 2-ring jet and ICC's defaults are repeated like the paraboloid fit, as the
-// report divides them by it.
-bool runs_once(Estimator e)
-{
-  switch (e) {
-    case Estimator::jet_d2_1ring:
-    case Estimator::jet_d4_3rings:
-    case Estimator::paraboloid_ball_8h:
-#if CGAL_VERSION_MAJOR >= 6
-    case Estimator::icc_ball_1h:
-    case Estimator::icc_ball_2h:
-#endif
-      return true;
-    default:
-      return false;
-  }
-}
-
+// disturbed run; the slow estimators (Estimator::slow) run once. The 2-ring jet and
+// ICC's defaults are repeated like the paraboloid fit, as the report divides them by it.
 void register_all(bool quick)
 {
-  std::vector<Input> inputs;
+  std::vector<std::string> inputs;
   for (int n : quick ? std::vector<int>{51, 101} : std::vector<int>{101, 317, 1001})
-    inputs.push_back({"grid_" + std::to_string(n), n});
+    inputs.push_back("grid_" + std::to_string(n));
   if (quick) {
-    inputs.push_back({"bunny00", 0});
-    inputs.push_back({"elephant", 0});
+    inputs.push_back("bunny00");
+    inputs.push_back("elephant");
   } else {
-    for (const char* name : real_mesh_names())
-      inputs.push_back({name, 0});
+    inputs.insert(inputs.end(), real_mesh_names().begin(), real_mesh_names().end());
   }
   const double min_time = quick ? 0.05 : 1.0;
-  const auto repetitions = [quick](Estimator e) { return quick || runs_once(e) ? 1 : 3; };
+  const auto repetitions = [quick](const Estimator& e) { return quick || e.slow ? 1 : 3; };
 
-  for (const Input& input : inputs)
-    for (const Estimator_info& e : estimators()) {
-      const std::string base = std::string(e.name) + "/" + input.name;
-      benchmark::RegisterBenchmark(
-        (base + "/seq").c_str(),
-        [e, input](benchmark::State& s) { time_estimator<CGAL::Sequential_tag>(s, e.id, input); })
+  for (const std::string& input : inputs)
+    for (const Estimator& e : estimators()) {
+      const std::string base = e.name + "/" + input;
+      benchmark::RegisterBenchmark((base + "/seq").c_str(),
+                                   [&e, input](benchmark::State& s) { time_estimator(s, e, input, 1); })
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime()
         ->MinTime(min_time)
-        ->Repetitions(repetitions(e.id))
+        ->Repetitions(repetitions(e))
         ->DisplayAggregatesOnly(true); // the JSON file still has every repetition
 #ifdef CGAL_LINKED_WITH_TBB
-      if (!e.parallel)
+      if (!e.parallel())
         continue;
-      benchmark::RegisterBenchmark(
-        (base + "/par").c_str(),
-        [e, input](benchmark::State& s) { time_estimator<CGAL::Parallel_tag>(s, e.id, input); })
+      benchmark::RegisterBenchmark((base + "/par").c_str(),
+                                   [&e, input](benchmark::State& s) { time_estimator(s, e, input, 0); })
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime() // wall clock: CPU time of the main thread says nothing of a parallel run
         ->MinTime(min_time)
-        ->Repetitions(repetitions(e.id))
+        ->Repetitions(repetitions(e))
         ->DisplayAggregatesOnly(true);
 #endif
     }
