@@ -26,45 +26,7 @@ fi
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 
-# z = 0.1 sin(3x) cos(2y) + 0.05 x y over [0, 1]^2, two triangles a cell, CCW seen
-# from +z. `flip` swaps two indices of the middle face: one inconsistently
-# oriented face.
-generate() {
-  python3 - "$n" "$1" "$2" <<'EOF'
-import math, sys
-n, path, flip = int(sys.argv[1]), sys.argv[2], sys.argv[3] == "flip"
-h = 1.0 / (n - 1)
-with open(path, "w") as out:
-    out.write("OFF\n%d %d 0\n" % (n * n, 2 * (n - 1) * (n - 1)))
-    lines = []
-    for j in range(n):
-        y = j * h
-        for i in range(n):
-            x = i * h
-            z = 0.1 * math.sin(3 * x) * math.cos(2 * y) + 0.05 * x * y
-            lines.append("%.9g %.9g %.9g\n" % (x, y, z))
-        if len(lines) > 100000:
-            out.write("".join(lines))
-            lines = []
-    out.write("".join(lines))
-    lines = []
-    middle = (n - 1) * (n - 1)
-    face = 0
-    for j in range(n - 1):
-        for i in range(n - 1):
-            a = j * n + i
-            b, c, d = a + 1, a + n, a + n + 1
-            for f in ((a, b, d), (a, d, c)):
-                if flip and face == middle:
-                    f = (f[1], f[0], f[2])
-                lines.append("3 %d %d %d\n" % f)
-                face += 1
-        if len(lines) > 100000:
-            out.write("".join(lines))
-            lines = []
-    out.write("".join(lines))
-EOF
-}
+generate() { /usr/bin/python3 "$(dirname "$0")/grid_off.py" "$n" "$1" "$2"; }
 
 generate "$work/clean.off" clean
 generate "$work/flipped.off" flip

@@ -29,6 +29,8 @@ if [ "${1:-}" = "--report" ]; then
   PACKAGES+=(python3 python3-matplotlib python3-numpy)
   # /usr/bin/time -v: wall time and peak memory of benchmark/tool_end_to_end.sh.
   PACKAGES+=(time)
+  # Callgrind: the default's instructions per vertex (benchmark/instructions.sh).
+  PACKAGES+=(valgrind)
 fi
 
 is_installed() {

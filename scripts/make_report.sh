@@ -17,7 +17,8 @@
 # Environment: CGAL_DIR, CE_BUILD_DIR (default: build-report, the report's own build
 # directory, configured with the CGAL chosen above at every run; not the tests' build/),
 # CE_JOBS (parallel compile jobs, default 2).
-# Raw outputs (speed.json, accuracy.csv, noise_radius.csv, the bunny's CSVs) stay in BUILD/report[_quick]/.
+# Raw outputs (speed.json, accuracy.csv, noise_radius.csv, estimators.json, the bunny's CSVs,
+# first_calls.jsonl, end_to_end.txt, instructions.txt) stay in BUILD/report[_quick]/.
 set -euo pipefail
 
 # A relative CGAL_DIR is relative to where the script was started.
@@ -27,7 +28,7 @@ quick=()
 for arg in "$@"; do
   case "$arg" in
     --quick) quick=(--quick) ;;
-    -h|--help) sed -n '2,19p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,21p' "$0"; exit 0 ;;
     *) echo "make_report: unknown argument '$arg' (expected --quick)" >&2; exit 2 ;;
   esac
 done
@@ -62,7 +63,7 @@ mkdir -p "$build"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCE_BUILD_BENCHMARKS=ON -DCE_BUILD_TESTS=OFF \
   -DCE_BUILD_EXAMPLES=OFF -DCE_BUILD_TOOLS=ON "${cgal[@]}" > "$build/make_report_configure.log" 2>&1 ||
   { cat "$build/make_report_configure.log" >&2; exit 1; }
-cmake --build "$build" --target accuracy_runner bench_estimators curvature -j "$jobs"
+cmake --build "$build" --target accuracy_runner bench_estimators first_calls curvature -j "$jobs"
 mkdir -p "$raw"
 
 # Speed first: it is the part that suffers most from a busy machine. The repetitions
@@ -75,15 +76,33 @@ step "speed benchmarks"
 step "accuracy runner"
 "$build/benchmark/accuracy_runner" "${quick[@]}" --out "$raw"
 
+# Each estimator but the slow ones in a fresh process, on the largest grid and the bunny.
+step "first calls in fresh processes"
+meshes=(grid_1001 bunny00)
+[ ${#quick[@]} -gt 0 ] && meshes=(grid_101 bunny00)
+: > "$raw/first_calls.jsonl"
+for name in $(/usr/bin/python3 -c 'import json, sys
+print(" ".join(e["name"] for e in json.load(open(sys.argv[1]))["estimators"] if not e.get("slow")))' \
+              "$raw/estimators.json"); do
+  for mesh in "${meshes[@]}"; do
+    "$build/benchmark/first_calls" "$name" "$mesh" >> "$raw/first_calls.jsonl"
+  done
+done
+
 step "the tool end to end"
 grid=1000
 [ ${#quick[@]} -gt 0 ] && grid=200
 bash benchmark/tool_end_to_end.sh "$build/tools/curvature" "$grid" > "$raw/end_to_end.txt"
 
+step "instructions per vertex of the default (callgrind)"
+grid=317
+[ ${#quick[@]} -gt 0 ] && grid=101
+bash benchmark/instructions.sh "$build/tools/curvature" "$grid" > "$raw/instructions.txt"
+
 elapsed=$(( $(date +%s) - start ))
 step "report"
 /usr/bin/python3 benchmark/make_report.py "${quick[@]}" --bench-json "$raw/speed.json" --accuracy-dir "$raw" \
-  --end-to-end "$raw/end_to_end.txt" \
+  --end-to-end "$raw/end_to_end.txt" --instructions "$raw/instructions.txt" --first-calls "$raw/first_calls.jsonl" \
   --build-dir "$build" --out-dir "$report_dir" \
   --duration "$((elapsed / 60)) min $((elapsed % 60)) s up to the report step (dependencies, build, benchmarks, accuracy)"
 step "done: $report_dir/REPORT.md"
