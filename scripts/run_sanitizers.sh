@@ -3,6 +3,7 @@
 # AddressSanitizer + UndefinedBehaviorSanitizer build of the tool and of the tests
 # that exercise bad input or the tool's own mesh building (test_tool runs the sanitized tool on every bad and
 # degenerate input), then CTest on them. Any sanitizer report fails the run.
+# Arguments: further CMake options, e.g. -DCE_WARNINGS_AS_ERRORS=ON.
 # env: SAN_BUILD_DIR (default ./build-sanitize), JOBS (default nproc), CXX.
 set -euo pipefail
 
@@ -17,7 +18,7 @@ FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-po
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCE_BUILD_TESTS=ON -DCE_BUILD_TOOLS=ON -DCE_BUILD_EXAMPLES=OFF -DCE_BUILD_BENCHMARKS=OFF \
   -DCMAKE_CXX_FLAGS="$FLAGS" \
-  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined"
+  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" "$@"
 cmake --build "$BUILD_DIR" -j "$JOBS" --target "${TARGETS[@]}"
 
 # Leaks are reported too (LeakSanitizer is part of ASan on Linux).
