@@ -3,8 +3,10 @@
 # AddressSanitizer + UndefinedBehaviorSanitizer build of the tool and of the tests
 # that exercise bad input or the tool's own mesh building (test_tool runs the sanitized tool on every bad and
 # degenerate input), then CTest on them. Any sanitizer report fails the run.
+# Built with clang: GCC 12 took 2 to 2.5 times as long to compile these units with the
+# same sanitizers (test_paraboloid_fitting: 280 s of CPU at -O1 -g, clang 127 s at -O2 -g).
 # Arguments: further CMake options, e.g. -DCE_WARNINGS_AS_ERRORS=ON.
-# env: SAN_BUILD_DIR (default ./build-sanitize), JOBS (default nproc), CXX.
+# env: SAN_BUILD_DIR (default ./build-sanitize), JOBS (default nproc), CXX (default clang++).
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -15,7 +17,7 @@ TARGETS=(curvature test_tool test_tool_mesh test_paraboloid_fitting)
 
 bash scripts/install_dependencies.sh
 FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER="${CXX:-clang++}" \
   -DCE_BUILD_TESTS=ON -DCE_BUILD_TOOLS=ON -DCE_BUILD_EXAMPLES=OFF -DCE_BUILD_BENCHMARKS=OFF \
   -DCMAKE_CXX_FLAGS="$FLAGS" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" "$@"
