@@ -14,6 +14,7 @@
 #include <CGAL/Curvature_estimation/mean_edge_length.h>
 #include <CGAL/Curvature_estimation/paraboloid_fitting.h>
 #include <CGAL/Curvature_estimation/parameters.h>
+#include <CGAL/Curvature_estimation/point_set_curvatures.h>
 #include <CGAL/Curvature_estimation/taubin.h>
 #include <CGAL/Curvature_estimation/vertex_normals.h>
 

@@ -40,19 +40,27 @@
   X(fit_degree_t, fit_degree)                                                                                          \
   X(jet_degree_t, jet_degree)                                                                                          \
   X(monge_degree_t, monge_degree)                                                                                      \
-  X(use_fallbacks_t, use_fallbacks)
+  X(use_fallbacks_t, use_fallbacks)                                                                                    \
+  X(number_of_neighbors_t, number_of_neighbors)                                                                        \
+  X(estimated_normal_map_t, estimated_normal_map)                                                                      \
+  X(orientation_component_map_t, orientation_component_map)                                                            \
+  X(orientation_confidence_map_t, orientation_confidence_map)                                                          \
+  X(unsigned_curvatures_t, unsigned_curvatures)
 #define CGAL_CE_PACKAGE_PARAMETERS(X)                                                                                  \
   CGAL_CE_PARAMETERS_SHARED_WITH_CGAL_6(X)                                                                             \
   CGAL_CE_OWN_PARAMETERS(X)
 
 // CGAL's parameters that a chain of this package may carry, re-declared as members
 // so that chaining them never falls back to CGAL's own class. The estimators read
-// the first three; the index maps are only carried, so that one chain can also
+// the first six; the index maps are only carried, so that one chain can also
 // serve CGAL's functions that need them.
 #define CGAL_CE_CGAL_PARAMETERS(X)                                                                                     \
   X(vertex_point_t, vertex_point_map)                                                                                  \
   X(vertex_normal_map_t, vertex_normal_map)                                                                            \
   X(geom_traits_t, geom_traits)                                                                                        \
+  X(point_t, point_map)                                                                                                \
+  X(normal_t, normal_map)                                                                                              \
+  X(neighbor_radius_t, neighbor_radius)                                                                                \
   X(vertex_index_t, vertex_index_map)                                                                                  \
   X(face_index_t, face_index_map)
 

@@ -79,8 +79,7 @@ public:
 
   static Surface_estimate estimate(Estimation_status status, const Graph_curvature<3>& curvature, double scale)
   {
-    return Surface_estimate::from_principal(status, curvature.curvatures[0] / scale, curvature.curvatures[1] / scale,
-                                            curvature.directions.col(0), curvature.directions.col(1), curvature.normal);
+    return surface_estimate_of(status, curvature, scale);
   }
 
 private:

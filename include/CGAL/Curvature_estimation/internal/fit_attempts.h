@@ -179,6 +179,19 @@ inline Fit_attempts ball_attempts(const Fit_settings& s)
   return attempts;
 }
 
+// The intercept fit of the degree over rings (ring_intercept), from the starting
+// rings on.
+inline Fit_attempts ring_intercept_attempts(const Fit_settings& s)
+{
+  const double max_condition = degree_condition_factor(s.degree) * s.max_condition;
+  const Fit_kind fit = intercept_fit_of_degree(s.degree);
+  Fit_attempts attempts;
+  attempts.add({fit, Condition_test::scaled, s.rings, s.max_rings, max_condition});
+  if (s.whitened_conditioning)
+    attempts.add({fit, Condition_test::whitened, s.rings, s.max_rings, max_condition});
+  return attempts;
+}
+
 // The plane-frame fit (the paraboloid estimator's first fallback): the quadratic
 // fit with an intercept in the frame of the least-squares plane of the vertex and
 // its rings, as CGAL's jet fitting fits, from the starting rings on.

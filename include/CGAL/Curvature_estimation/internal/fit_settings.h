@@ -26,12 +26,14 @@ struct Fit_settings
   int degree = 2;              // fit_degree
   double ball_radius = 0;      // > 0: the fits over the ball of this radius, not the rings
   bool smooth_weights = false; // in the ball, Neighbor_weighting::smooth (else uniform)
+  bool ring_intercept = false; // over rings too, the intercept fit of the degree (point sets)
   // Whether the whitened test may accept the widest neighborhood where the
   // scaled test refuses every one (false: the scaled test alone).
   bool whitened_conditioning = true;
 
   int start_rings(bool on_border) const { return on_border ? boundary_rings : rings; }
   bool in_ball() const { return ball_radius > 0; }
+  bool fits_intercept() const { return in_ball() || ring_intercept; }
 };
 
 struct Fit_parameters

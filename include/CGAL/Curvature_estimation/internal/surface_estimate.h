@@ -7,6 +7,7 @@
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/internal/for_each_vertex.h>
 #include <CGAL/Curvature_estimation/internal/local_coordinates.h>
+#include <CGAL/Curvature_estimation/internal/shape_operator.h>
 #include <CGAL/Curvature_estimation/parameters.h>
 
 #include <CGAL/number_utils.h>
@@ -49,6 +50,13 @@ struct Surface_estimate
   }
 };
 
+// The estimate from the curvature of a fit's graph in coordinates divided by `scale`.
+inline Surface_estimate surface_estimate_of(Estimation_status status, const Graph_curvature<3>& curvature, double scale)
+{
+  return Surface_estimate::from_principal(status, curvature.curvatures[0] / scale, curvature.curvatures[1] / scale,
+                                          curvature.directions.col(0), curvature.directions.col(1), curvature.normal);
+}
+
 // True when `np` asks for any output of a curvature estimator.
 template <typename NamedParameters>
 constexpr bool wants_curvature_output()
@@ -81,9 +89,10 @@ constexpr bool surface_outputs_accessible_concurrently()
          given_map_accessible_concurrently<NP>(internal_np::vertex_estimation_status_map);
 }
 
-// Writes the outputs that `np` asks for, and only those.
+// Writes the outputs that `np` asks for, and only those; `v` by reference for the
+// maps that write into the key (those of a point range's elements).
 template <typename GT, typename NamedParameters, typename VertexDescriptor>
-void put_surface_estimate(const NamedParameters& np, VertexDescriptor v, const Surface_estimate& e)
+void put_surface_estimate(const NamedParameters& np, VertexDescriptor&& v, const Surface_estimate& e)
 {
   using ::CGAL::parameters::get_parameter;
   using FT = typename GT::FT;

@@ -70,8 +70,8 @@ public:
     if (!(length > 0) || !std::isfinite(length) || !samples_.gather(v, settings_.ball_radius))
       return finished(result);
     const Vector unit = normal / length;
-    if (settings_.in_ball())
-      result.estimate = ball_fit(unit);
+    if (settings_.fits_intercept())
+      result.estimate = intercept_fit(unit);
     else if (settings_.degree == 2)
       result.estimate = curvature_fit(start_paraboloid_attempts_[samples_.on_border()], unit, result);
     else
@@ -87,12 +87,12 @@ public:
     Vertex_fit<Estimate> result;
     if (!samples_.gather(v, settings_.ball_radius))
       return finished(result);
-    if (settings_.degree == 2 && !settings_.in_ball())
+    if (settings_.degree == 2 && !settings_.fits_intercept())
       result.estimate = degree_two_curvature(v, method, result);
     else {
       Vector normal;
       if (samples_.first_order_normal(v, method, true, normal))
-        result.estimate = settings_.in_ball() ? ball_fit(normal) : degree_fit(normal, true, result);
+        result.estimate = settings_.fits_intercept() ? intercept_fit(normal) : degree_fit(normal, true, result);
     }
     return finished(result);
   }
@@ -176,7 +176,7 @@ private:
   using Normal_kinds = Fit_kinds<Fit_kind::gradient_2, Fit_kind::gradient_3>;
   using Degree_kinds =
     std::conditional_t<D == 2, Fit_kinds<Fit_kind::gradient_3, Fit_kind::gradient_4>, Fit_kinds<Fit_kind::gradient_3>>;
-  using Ball_kinds =
+  using Intercept_kinds =
     std::conditional_t<D == 2, Fit_kinds<Fit_kind::intercept_2, Fit_kind::intercept_3, Fit_kind::intercept_4>,
                        Fit_kinds<Fit_kind::intercept_2, Fit_kind::intercept_3>>;
 
@@ -243,14 +243,18 @@ private:
     return estimate;
   }
 
-  // The fit of the settings' degree with an intercept over the ball, in the frame of `normal`.
-  Estimate ball_fit(const Vector& normal)
+  // The fit of the settings' degree with an intercept over the ball or the rings, in the frame of `normal`.
+  Estimate intercept_fit(const Vector& normal)
   {
     Estimate estimate;
-    ball_walk(normal, [&](auto& fit, const Sampling& sampling, int reach) {
+    const auto use = [&](auto& fit, const Sampling& sampling, int reach) {
       estimate = curvature_estimate(fit, sampling, reach, 1);
       return true;
-    });
+    };
+    if (settings_.in_ball())
+      ball_walk(normal, use);
+    else
+      walk(Intercept_kinds(), ring_intercept_attempts(settings_), normal, use);
     return estimate;
   }
 
@@ -341,7 +345,7 @@ private:
   {
     const Fit_attempts attempts = ball_attempts(settings_);
     const Sampling sampling{Samples::frame_of(normal), 0, attempts.begin()->weights};
-    with_fit<D>(Ball_kinds(), attempts.begin()->fit, [&](auto& fit) {
+    with_fit<D>(Intercept_kinds(), attempts.begin()->fit, [&](auto& fit) {
       using Fit = std::remove_reference_t<decltype(fit)>;
       const auto accepted = [&] {
         for (const Fit_attempt& attempt : attempts) {

@@ -1,0 +1,167 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A consistent orientation of the unoriented normals of a point set: a maximum
+// spanning tree of the agreement between neighbors' normals (as CGAL's
+// mst_orient_normals, without reordering the points), then one side per
+// connected part. The manual's "Point sets" says where it can flip.
+#ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_NORMAL_ORIENTATION_H
+#define CGAL_CURVATURE_ESTIMATION_INTERNAL_NORMAL_ORIENTATION_H
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <queue>
+#include <tuple>
+#include <vector>
+
+namespace CGAL {
+namespace Curvature_estimation {
+namespace internal {
+
+// Per point: the part it was oriented with (no_part without a normal) and the
+// confidence of its orientation in [0, 1].
+struct Normal_orientation
+{
+  static constexpr std::uint32_t no_part = (std::numeric_limits<std::uint32_t>::max)();
+  std::vector<std::uint32_t> part;
+  std::vector<float> confidence;
+};
+
+// How much the orientation of q's normal follows from p's: |n_p . n_q|, less
+// where the offset leaves either tangent plane (an edge across a thin part).
+inline float normal_agreement(const Eigen::Vector3d& p, const Eigen::Vector3f& n_p, const Eigen::Vector3d& q,
+                              const Eigen::Vector3f& n_q)
+{
+  const Eigen::Vector3f d = (q - p).cast<float>().normalized();
+  const float leaving = d.allFinite() ? (std::max)(std::abs(n_p.dot(d)), std::abs(n_q.dot(d))) : 0.f;
+  return std::abs(n_p.dot(n_q)) * (1 - leaving);
+}
+
+// Orients `normals` (unit, or zero where a point has none) over the graph in
+// which `neighbors(i, visit)` calls visit(j) for the neighbors j of i.
+template <typename Neighbors>
+Normal_orientation orient_normals(const std::vector<Eigen::Vector3d>& points, std::vector<Eigen::Vector3f>& normals,
+                                  const Neighbors& neighbors)
+{
+  const std::size_t n = points.size();
+  const auto has_normal = [&](std::size_t i) { return normals[i].squaredNorm() > 0; };
+  Normal_orientation result;
+  result.part.assign(n, Normal_orientation::no_part);
+  result.confidence.assign(n, 0.f);
+  std::vector<std::uint32_t>& part = result.part;
+  std::vector<float>& confidence = result.confidence;
+
+  // Prim from each point not yet reached, over the edges listed from reached points.
+  using Edge = std::tuple<float, std::uint32_t, std::uint32_t>; // agreement, point, from
+  std::priority_queue<Edge> front;
+  std::uint32_t parts = 0;
+  for (std::size_t seed = 0; seed < n; ++seed) {
+    if (part[seed] != Normal_orientation::no_part || !has_normal(seed))
+      continue;
+    front.emplace(1.f, std::uint32_t(seed), std::uint32_t(seed));
+    while (!front.empty()) {
+      const auto [agreement, i, from] = front.top();
+      front.pop();
+      if (part[i] != Normal_orientation::no_part)
+        continue;
+      if (normals[i].dot(normals[from]) < 0)
+        normals[i] = -normals[i];
+      part[i] = parts;
+      confidence[i] = (std::min)(agreement, i == from ? 1.f : confidence[from]);
+      neighbors(i, [&](std::uint32_t j) {
+        if (part[j] == Normal_orientation::no_part && has_normal(j))
+          front.emplace(normal_agreement(points[i], normals[i], points[j], normals[j]), j, i);
+      });
+    }
+    ++parts;
+  }
+
+  // Parts joined by edges listed from their far side only: by decreasing agreement,
+  // a union-find that keeps each part's flip relative to its root.
+  std::vector<Edge> joins; // agreement, point, neighbor
+  for (std::uint32_t i = 0; i < n; ++i)
+    if (part[i] != Normal_orientation::no_part)
+      neighbors(i, [&](std::uint32_t j) {
+        if (part[j] != Normal_orientation::no_part && part[j] != part[i])
+          joins.emplace_back(normal_agreement(points[i], normals[i], points[j], normals[j]), i, j);
+      });
+  std::sort(joins.begin(), joins.end(), [](const Edge& a, const Edge& b) { return std::get<0>(a) > std::get<0>(b); });
+  std::vector<std::uint32_t> root(parts);
+  std::vector<char> flip(parts, 0); // relative to root[], before compression: to the root
+  std::vector<float> join_agreement(parts, 1.f);
+  for (std::uint32_t c = 0; c < parts; ++c)
+    root[c] = c;
+  const auto find = [&](std::uint32_t c) {
+    char parity = 0;
+    std::uint32_t r = c;
+    while (root[r] != r) {
+      parity ^= flip[r];
+      r = root[r];
+    }
+    return std::make_pair(r, parity);
+  };
+  for (const auto& [agreement, i, j] : joins) {
+    const auto [ri, pi] = find(part[i]);
+    const auto [rj, pj] = find(part[j]);
+    if (ri == rj)
+      continue;
+    const std::uint32_t child = (std::max)(ri, rj), parent = (std::min)(ri, rj);
+    root[child] = parent;
+    flip[child] = char(pi ^ pj ^ (normals[i].dot(normals[j]) < 0 ? 1 : 0));
+    join_agreement[child] = agreement;
+  }
+
+  // One side per joined part: the one whose normals point away from its centroid
+  // on the whole (outward on a closed surface).
+  std::vector<Eigen::Vector3d> centroid(parts, Eigen::Vector3d::Zero());
+  std::vector<double> count(parts, 0), side(parts, 0), spread(parts, 0);
+  std::vector<std::uint32_t> final_part(parts);
+  std::vector<char> final_flip(parts);
+  std::vector<float> weakest_join(parts);
+  std::vector<std::uint32_t> number(parts, Normal_orientation::no_part); // of the roots, from 0
+  std::uint32_t joined = 0;
+  for (std::uint32_t c = 0; c < parts; ++c) {
+    const auto [r, parity] = find(c);
+    if (number[r] == Normal_orientation::no_part)
+      number[r] = joined++;
+    final_part[c] = number[r];
+    final_flip[c] = parity;
+    float weakest = 1.f;
+    for (std::uint32_t k = c; root[k] != k; k = root[k])
+      weakest = (std::min)(weakest, join_agreement[k]);
+    weakest_join[c] = weakest;
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    if (part[i] != Normal_orientation::no_part) {
+      const std::uint32_t c = part[i];
+      if (final_flip[c])
+        normals[i] = -normals[i];
+      confidence[i] = (std::min)(confidence[i], weakest_join[c]);
+      part[i] = final_part[c];
+      centroid[part[i]] += points[i];
+      count[part[i]] += 1;
+    }
+  for (std::size_t i = 0; i < n; ++i)
+    if (part[i] != Normal_orientation::no_part) {
+      const double s = normals[i].cast<double>().dot(points[i] - centroid[part[i]] / count[part[i]]);
+      side[part[i]] += s;
+      spread[part[i]] += std::abs(s);
+    }
+  for (std::size_t i = 0; i < n; ++i)
+    if (part[i] != Normal_orientation::no_part) {
+      const std::uint32_t c = part[i];
+      if (side[c] < 0)
+        normals[i] = -normals[i];
+      const double certainty = spread[c] > 0 ? std::abs(side[c]) / spread[c] : 0;
+      confidence[i] = (std::min)(confidence[i], float(certainty));
+    }
+  return result;
+}
+
+} // namespace internal
+} // namespace Curvature_estimation
+} // namespace CGAL
+
+#endif // CGAL_CURVATURE_ESTIMATION_INTERNAL_NORMAL_ORIENTATION_H

@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The neighbors of the points of a point set: CGAL's kd-tree over their indices,
+// built once and queried from several threads: the k nearest, exactly, and the
+// points within a distance.
+#ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_POINT_SET_SEARCH_H
+#define CGAL_CURVATURE_ESTIMATION_INTERNAL_POINT_SET_SEARCH_H
+
+#include <CGAL/Fuzzy_sphere.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/property_map.h>
+
+#include <boost/function_output_iterator.hpp>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Curvature_estimation {
+namespace internal {
+
+// The points are Eigen vectors, stored once; the tree holds the indices of the
+// finite ones, so that a non-finite point is never anyone's neighbor.
+class Point_set_search
+{
+public:
+  using Index = std::uint32_t;
+  using Kernel = CGAL::Simple_cartesian<double>;
+  using Point_3 = Kernel::Point_3;
+  using Found = std::vector<std::pair<double, Index>>; // squared distance, index
+
+  template <typename ConcurrencyTag>
+  Point_set_search(std::vector<Eigen::Vector3d> points, ConcurrencyTag)
+      : points_(std::move(points))
+      , map_{&points_}
+      , tree_(Splitter(), Traits(map_))
+      , distance_(map_)
+  {
+    for (std::size_t i = 0; i < points_.size(); ++i)
+      if (points_[i].allFinite()) {
+        tree_.insert(Index(i));
+        ++finite_;
+      }
+    tree_.template build<ConcurrencyTag>();
+  }
+
+  Point_set_search(const Point_set_search&) = delete;
+  Point_set_search& operator=(const Point_set_search&) = delete;
+
+  std::size_t size() const { return points_.size(); }
+  std::size_t finite_size() const { return finite_; }
+  const Eigen::Vector3d& point(std::size_t i) const { return points_[i]; }
+  const std::vector<Eigen::Vector3d>& points() const { return points_; }
+
+  // The `count` points nearest to point i, i excluded, nearest first and ties by
+  // index; fewer where the set has fewer.
+  void nearest(Index i, std::size_t count, Found& found) const
+  {
+    found.clear();
+    const Search search(tree_, point_3(i), static_cast<unsigned>(count + 1), 0, true, distance_);
+    for (const auto& neighbor : search)
+      if (neighbor.first != i)
+        found.emplace_back(neighbor.second, neighbor.first);
+    if (found.size() > count)
+      found.resize(count);
+    std::sort(found.begin(), found.end());
+  }
+
+  // The points within `radius` of point i, i excluded, in no order.
+  void within(Index i, double radius, Found& found) const
+  {
+    found.clear();
+    tree_.search(boost::make_function_output_iterator(Add{&points_, i, &found}),
+                 Sphere(point_3(i), radius, 0, tree_.traits()));
+  }
+
+private:
+  struct Point_map
+  {
+    using key_type = Index;
+    using value_type = Point_3;
+    using reference = Point_3;
+    using category = boost::readable_property_map_tag;
+    const std::vector<Eigen::Vector3d>* points;
+    friend Point_3 get(const Point_map& map, Index i)
+    {
+      const Eigen::Vector3d& p = (*map.points)[i];
+      return Point_3(p.x(), p.y(), p.z());
+    }
+  };
+  using Base = CGAL::Search_traits_3<Kernel>;
+  using Traits = CGAL::Search_traits_adapter<Index, Point_map, Base>;
+  using Splitter = CGAL::Sliding_midpoint<Traits>;
+  using Distance = CGAL::Distance_adapter<Index, Point_map, CGAL::Euclidean_distance<Base>>;
+  using Tree = CGAL::Kd_tree<Traits, Splitter, CGAL::Tag_true, CGAL::Tag_true>;
+  using Search = CGAL::Orthogonal_k_neighbor_search<Traits, Distance, Splitter, Tree>;
+  using Sphere = CGAL::Fuzzy_sphere<Traits>;
+
+  struct Add // assignable, as an output iterator's function must be
+  {
+    const std::vector<Eigen::Vector3d>* points;
+    Index center;
+    Found* found;
+    void operator()(Index j) const
+    {
+      if (j != center)
+        found->emplace_back(((*points)[j] - (*points)[center]).squaredNorm(), j);
+    }
+  };
+
+  Point_3 point_3(Index i) const { return get(map_, i); }
+
+  std::vector<Eigen::Vector3d> points_;
+  Point_map map_;
+  Tree tree_;
+  Distance distance_;
+  std::size_t finite_ = 0;
+};
+
+} // namespace internal
+} // namespace Curvature_estimation
+} // namespace CGAL
+
+#endif // CGAL_CURVATURE_ESTIMATION_INTERNAL_POINT_SET_SEARCH_H

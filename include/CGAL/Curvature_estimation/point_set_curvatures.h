@@ -1,0 +1,335 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Curvature of point sets: the fits of the mesh estimators over nearest neighbors.
+#ifndef CGAL_CURVATURE_ESTIMATION_POINT_SET_CURVATURES_H
+#define CGAL_CURVATURE_ESTIMATION_POINT_SET_CURVATURES_H
+
+#include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
+#include <CGAL/Curvature_estimation/internal/fallback_chain.h>
+#include <CGAL/Curvature_estimation/internal/fit_settings.h>
+#include <CGAL/Curvature_estimation/internal/for_each_vertex.h>
+#include <CGAL/Curvature_estimation/internal/normal_orientation.h>
+#include <CGAL/Curvature_estimation/internal/point_set_neighborhood.h>
+#include <CGAL/Curvature_estimation/internal/point_set_search.h>
+#include <CGAL/Curvature_estimation/internal/surface_estimate.h>
+#include <CGAL/Curvature_estimation/internal/vertex_fitter.h>
+#include <CGAL/Curvature_estimation/parameters.h>
+
+#include <CGAL/Point_set_3.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
+
+#include <boost/iterator/counting_iterator.hpp>
+#include <boost/range/iterator_range.hpp>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <limits>
+#include <stdexcept>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Curvature_estimation {
+namespace internal {
+
+// The default number_of_neighbors at fit_degree 2, 3 and 4 (the manual's "Point sets").
+constexpr std::size_t default_point_set_neighbors(int degree) { return degree == 2 ? 16 : degree == 3 ? 32 : 64; }
+
+template <typename T>
+struct Is_point_set_3 : std::false_type
+{};
+template <typename P, typename V>
+struct Is_point_set_3<CGAL::Point_set_3<P, V>> : std::true_type
+{};
+
+// The fit at one point with its fallback chain (see `estimate`).
+class Point_set_estimator
+{
+public:
+  Point_set_estimator(const Point_set_search& search, const Fit_settings& settings, std::size_t neighbors,
+                      const Point_set_rings* rings, bool use_fallbacks)
+      : fitter_(Point_set_neighborhood(search, neighbors, settings.ball_radius, rings), settings)
+      , degree_two_(Point_set_neighborhood(search, neighbors, settings.ball_radius, rings), of_degree_two(settings))
+      , use_fallbacks_(use_fallbacks)
+  {}
+
+  // The fallback chain: the fit of fit_degree; at degrees 3 and 4 the fit of degree 2.
+  Surface_estimate estimate(std::size_t v, const Eigen::Vector3d* given)
+  {
+    return estimate_with_fallbacks<Surface_estimate>(
+      use_fallbacks_, [&] { return fit(fitter_, v, given); }, fallback(Tried_where::refused, [&] {
+        return fitter_.settings().degree == 2 ? Link_result<Surface_estimate>() : fit(degree_two_, v, given);
+      }));
+  }
+
+private:
+  using Fitter = Vertex_fitter<Point_set_neighborhood>;
+
+  static Fit_settings of_degree_two(Fit_settings settings)
+  {
+    settings.degree = 2;
+    return settings;
+  }
+
+  static Link_result<Surface_estimate> fit(Fitter& fitter, std::size_t v, const Eigen::Vector3d* given)
+  {
+    const Vertex_fit<Surface_estimate> r =
+      given != nullptr ? fitter.fit(v, *given) : fitter.fit(v, Vertex_normal_method::quadric_fit);
+    if (r.estimate.status != Estimation_status::not_estimable)
+      return {r.estimate, Verdict::accepted};
+    return {r.estimate,
+            r.neighbors < std::size_t(Intercept_fit<2, 2>::unknowns) ? Verdict::hopeless : Verdict::refused};
+  }
+
+  Fitter fitter_;
+  Fitter degree_two_;
+  bool use_fallbacks_;
+};
+
+// The loop's worker (for_each_vertex): the given normals read by `keys(i)`.
+template <bool given, typename NormalMap, typename Keys>
+struct Point_set_worker
+{
+  Point_set_estimator estimator;
+  NormalMap normals;
+  const Keys* keys;
+  Eigen::Vector3d load(std::size_t i) const { return load_given_normal<given>(normals, (*keys)(i)); }
+  Surface_estimate compute(std::size_t i, const Eigen::Vector3d& normal)
+  {
+    return estimator.estimate(i, given ? &normal : nullptr);
+  }
+};
+
+// The estimate seen from the other side: what the opposite normal gives.
+inline Surface_estimate flipped(const Surface_estimate& e)
+{
+  return Surface_estimate::from_principal(e.status, -e.min_curvature, -e.max_curvature, e.min_direction,
+                                          e.max_direction, -e.normal);
+}
+
+// The first ring of every point and the normal of its least-squares plane,
+// oriented consistently (see orient_normals); rows of `stride` neighbors.
+template <typename ConcurrencyTag>
+Normal_orientation oriented_rings(const Point_set_search& search, std::size_t neighbors, double radius,
+                                  std::size_t stride, Point_set_rings& rings)
+{
+  const std::size_t n = search.size();
+  rings.stride = stride;
+  rings.neighbors.assign(n * stride, Point_set_rings::none);
+  rings.normals.assign(n, Eigen::Vector3f::Zero());
+  struct Worker
+  {
+    Point_set_neighborhood neighborhood;
+    Point_set_rings* rings;
+    std::vector<Eigen::Vector3d> offsets;
+    Point_set_search::Found nearest;
+    char load(std::size_t) const { return 0; }
+    char compute(std::size_t v, char)
+    {
+      if (!neighborhood.point(v).allFinite())
+        return 0;
+      neighborhood.start(v);
+      const auto& gathered = neighborhood.vertices();
+      offsets.clear();
+      nearest.clear();
+      for (std::size_t i = 0; i < gathered.size(); ++i) {
+        offsets.push_back(neighborhood.point(gathered[i]) - neighborhood.point(v));
+        if (i > 0)
+          nearest.emplace_back(offsets.back().squaredNorm(), Point_set_search::Index(gathered[i]));
+      }
+      const std::size_t row = (std::min)(rings->stride, nearest.size());
+      std::partial_sort(nearest.begin(), nearest.begin() + row, nearest.end()); // a ball is in no order
+      for (std::size_t i = 0; i < row; ++i)
+        rings->neighbors[v * rings->stride + i] = nearest[i].second;
+      const Eigen::Vector3d normal = Point_set_neighborhood::plane_normal(offsets.data(), offsets.size());
+      if (offsets.size() >= 3 && normal.allFinite())
+        rings->normals[v] = normal.cast<float>();
+      return 0;
+    }
+  };
+  const auto indices =
+    boost::make_iterator_range(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(n));
+  for_each_vertex<ConcurrencyTag, true>(
+    indices, Worker{Point_set_neighborhood(search, neighbors, radius), &rings, {}, {}}, [](std::size_t, char) {});
+  return orient_normals(search.points(), rings.normals, [&](std::size_t i, const auto& visit) {
+    for (std::size_t k = 0; k < stride; ++k) {
+      const Point_set_search::Index j = rings.neighbors[i * stride + k];
+      if (j == Point_set_rings::none)
+        break;
+      visit(j);
+    }
+  });
+}
+
+} // namespace internal
+
+/// \ingroup PkgCurvatureEstimationRef
+///
+/// estimates principal curvatures and directions, mean and Gaussian curvature at every point of
+/// `points` (a scan, a lidar or photogrammetry point cloud) by the Taylor fits of the mesh
+/// estimators, over the nearest neighbors of each point instead of its rings.
+///
+/// The neighborhood is the `number_of_neighbors` nearest points (exactly), or all points within
+/// `neighbor_radius`. At each point the polynomial of `fit_degree` with a constant term (the point
+/// itself is a sample, its own noise averaged) is fitted by least squares to the heights of the
+/// neighborhood over the least-squares plane of the neighbors, or over the plane of the given
+/// normal; the fitted gradient corrects that normal, and the curvatures are those of the fitted
+/// graph. Where the fit is ill-conditioned the neighborhood doubles, twice (status `widened`); at
+/// degrees 3 and 4 the fit of degree 2 is the fallback (status `fallback`).
+///
+/// Orientation: a given `normal_map` (or the normals of a `Point_set_3`) orients the result. Without,
+/// the normals are oriented consistently over the set by a maximum spanning tree of the neighbors'
+/// normals' agreement, each connected part outward on the whole (see the User Manual, "Point sets",
+/// for where this can flip); `orientation_component_map` and `orientation_confidence_map` show it per
+/// point. With `unsigned_curvatures(true)` each point takes the side where H >= 0.
+///
+/// Conventions as on meshes: with outward normals a sphere of radius r has `max_curvature ==
+/// min_curvature == 1/r`. A point that cannot be estimated (non-finite, fewer neighbors than the fit
+/// has unknowns, neighbors on a line) gets NaN in every output. Only the outputs passed are written.
+///
+/// \tparam PointRange a model of `Range` (`CGAL::Point_set_3` or any range with a `point_map`); the
+///         output maps are keyed by its value type.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{point_map}
+///     \cgalParamDescription{the points of the range's elements}
+///     \cgalParamDefault{`CGAL::Identity_property_map`, or the point map of a `Point_set_3`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{normal_map}
+///     \cgalParamDescription{given normals (read, not written), which set the fit's plane and orient the result}
+///     \cgalParamDefault{none; for a `Point_set_3`, its normal map if it has one}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_neighbors}
+///     \cgalParamDescription{the neighbors of a point's fit}
+///     \cgalParamDefault{16, 32 and 64 at fit_degree 2, 3 and 4}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{neighbor_radius}
+///     \cgalParamDescription{instead, the points within this distance (grown by 25% steps up to twice where too few)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{fit_degree}
+///     \cgalParamDescription{the degree of the fitted polynomial: 2, 3 or 4}
+///     \cgalParamDefault{`2`}
+///   \cgalParamNEnd
+///   \ceUseFallbacksParameter
+///   \cgalParamNBegin{unsigned_curvatures}
+///     \cgalParamDescription{whether each point takes the side where H >= 0 instead of an orientation}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{estimated_normal_map}
+///     \cgalParamDescription{output: the unit normal of the fitted graph, oriented as the result}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{orientation_component_map}
+///     \cgalParamDescription{output (`std::size_t`): the connected part of the neighbor graph a point was
+///       oriented with, numbered from 0; `std::size_t(-1)` where not oriented (given normals, unsigned
+///       curvatures, no normal)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{orientation_confidence_map}
+///     \cgalParamDescription{output (`double` in [0, 1]): how surely the orientation holds; 0 where not oriented}
+///   \cgalParamNEnd
+///   \ceSurfaceOutputParameters{K = k1 k2, `ok`\, `widened`\, `fallback` or `not_estimable`}
+/// \cgalNamedParamsEnd
+///
+/// \throws std::invalid_argument if a parameter is out of its range or the range has 2^32 points or more.
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename PointRange,
+          typename NamedParameters = parameters::Default_named_parameters>
+void point_set_curvatures(PointRange& points, const NamedParameters& np = parameters::default_values())
+{
+  using ::CGAL::parameters::get_parameter;
+  using NP_helper = CGAL::Point_set_processing_3_np_helper<PointRange, NamedParameters>;
+  using GT = typename NP_helper::Geom_traits;
+  using Iterator = decltype(std::begin(points));
+  constexpr bool random_access =
+    std::is_base_of<std::random_access_iterator_tag, typename std::iterator_traits<Iterator>::iterator_category>::value;
+  const char* const caller = "point_set_curvatures";
+
+  internal::Fit_parameters fit = internal::curvature_fit_parameters(np, caller, 4, false);
+  internal::Fit_settings& settings = fit.settings;
+  settings.ring_intercept = true;
+  settings.ball_radius = static_cast<double>(internal::parameter_or(np, ::CGAL::internal_np::neighbor_radius, 0.0));
+  const bool by_radius = internal::has_parameter<NamedParameters, ::CGAL::internal_np::neighbor_radius_t>();
+  const std::size_t k = internal::parameter_or(np, internal_np::number_of_neighbors,
+                                               internal::default_point_set_neighbors(settings.degree));
+  if (by_radius && internal::has_parameter<NamedParameters, internal_np::number_of_neighbors_t>())
+    throw std::invalid_argument(std::string(caller) + ": give number_of_neighbors or neighbor_radius, not both");
+  if (by_radius && !(settings.ball_radius > 0 && std::isfinite(settings.ball_radius)))
+    throw std::invalid_argument(std::string(caller) + ": neighbor_radius must be positive and finite");
+  if (!by_radius && k < 3)
+    throw std::invalid_argument(std::string(caller) + ": number_of_neighbors must be at least 3");
+  const bool use_fallbacks = internal::parameter_or(np, internal_np::use_fallbacks, true);
+  const bool unsigned_curvatures = internal::parameter_or(np, internal_np::unsigned_curvatures, false);
+
+  // The elements' keys, by position.
+  std::vector<Iterator> iterators;
+  if constexpr (!random_access)
+    for (auto it = std::begin(points); it != std::end(points); ++it)
+      iterators.push_back(it);
+  const auto key = [&](std::size_t i) -> decltype(auto) {
+    if constexpr (random_access)
+      return *(std::begin(points) + i);
+    else
+      return *iterators[i];
+  };
+  const std::size_t n = static_cast<std::size_t>(std::distance(std::begin(points), std::end(points)));
+  if (n >= std::size_t(internal::Point_set_rings::none))
+    throw std::invalid_argument(std::string(caller) + ": at most 2^32 - 1 points");
+
+  const auto point_map = NP_helper::get_const_point_map(points, np);
+  std::vector<Eigen::Vector3d> coordinates(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& p = get(point_map, key(i));
+    coordinates[i] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+  const internal::Point_set_search search(std::move(coordinates), ConcurrencyTag());
+  const std::size_t neighbors = by_radius ? 0 : k;
+
+  const auto run = [&](auto with_normals, const auto& normal_map) {
+    constexpr bool given = decltype(with_normals)::value;
+    internal::Point_set_rings rings;
+    internal::Normal_orientation orientation;
+    if (!given && !unsigned_curvatures)
+      orientation =
+        internal::oriented_rings<ConcurrencyTag>(search, neighbors, settings.ball_radius, by_radius ? 16 : k, rings);
+    const bool oriented = !orientation.part.empty();
+    const auto store = [&](std::size_t i, internal::Surface_estimate e) {
+      if (unsigned_curvatures && !given && e.max_curvature + e.min_curvature < 0)
+        e = internal::flipped(e);
+      internal::put_surface_estimate<GT>(np, key(i), e);
+      if constexpr (internal::has_parameter<NamedParameters, internal_np::estimated_normal_map_t>())
+        put(get_parameter(np, internal_np::estimated_normal_map), key(i),
+            typename GT::Vector_3(e.normal.x(), e.normal.y(), e.normal.z()));
+      if constexpr (internal::has_parameter<NamedParameters, internal_np::orientation_component_map_t>())
+        put(get_parameter(np, internal_np::orientation_component_map), key(i),
+            oriented && orientation.part[i] != internal::Normal_orientation::no_part ? std::size_t(orientation.part[i])
+                                                                                     : std::size_t(-1));
+      if constexpr (internal::has_parameter<NamedParameters, internal_np::orientation_confidence_map_t>())
+        put(get_parameter(np, internal_np::orientation_confidence_map), key(i),
+            oriented ? double(orientation.confidence[i]) : 0.0);
+    };
+    const auto indices =
+      boost::make_iterator_range(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(n));
+    using Worker = internal::Point_set_worker<given, std::decay_t<decltype(normal_map)>, decltype(key)>;
+    internal::for_each_vertex<ConcurrencyTag, false>(
+      indices,
+      Worker{internal::Point_set_estimator(search, settings, neighbors, oriented ? &rings : nullptr, use_fallbacks),
+             normal_map, &key},
+      store);
+  };
+  if constexpr (internal::has_parameter<NamedParameters, ::CGAL::internal_np::normal_t>())
+    run(std::true_type(), get_parameter(np, ::CGAL::internal_np::normal_map));
+  else if constexpr (internal::Is_point_set_3<std::remove_cv_t<PointRange>>::value) {
+    if (points.has_normal_map())
+      run(std::true_type(), points.normal_map());
+    else
+      run(std::false_type(), 0);
+  } else
+    run(std::false_type(), 0);
+}
+
+} // namespace Curvature_estimation
+} // namespace CGAL
+
+#endif // CGAL_CURVATURE_ESTIMATION_POINT_SET_CURVATURES_H
