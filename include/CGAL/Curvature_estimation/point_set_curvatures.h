@@ -283,7 +283,9 @@ void point_set_curvatures(PointRange& points, const NamedParameters& np = parame
     const auto& p = get(point_map, key(i));
     coordinates[i] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
   }
-  const internal::Point_set_search search(std::move(coordinates), ConcurrencyTag());
+  const internal::Point_set_search search(coordinates, ConcurrencyTag());
+  std::vector<Eigen::Vector3d>().swap(coordinates);
+  const auto key_of = [&](std::size_t i) -> decltype(auto) { return key(search.original(i)); }; // i: the search's
   const std::size_t neighbors = by_radius ? 0 : k;
 
   const auto run = [&](auto with_normals, const auto& normal_map) {
@@ -297,25 +299,25 @@ void point_set_curvatures(PointRange& points, const NamedParameters& np = parame
     const auto store = [&](std::size_t i, internal::Surface_estimate e) {
       if (unsigned_curvatures && !given && e.max_curvature + e.min_curvature < 0)
         e = internal::flipped(e);
-      internal::put_surface_estimate<GT>(np, key(i), e);
+      internal::put_surface_estimate<GT>(np, key_of(i), e);
       if constexpr (internal::has_parameter<NamedParameters, internal_np::estimated_normal_map_t>())
-        put(get_parameter(np, internal_np::estimated_normal_map), key(i),
+        put(get_parameter(np, internal_np::estimated_normal_map), key_of(i),
             typename GT::Vector_3(e.normal.x(), e.normal.y(), e.normal.z()));
       if constexpr (internal::has_parameter<NamedParameters, internal_np::orientation_component_map_t>())
-        put(get_parameter(np, internal_np::orientation_component_map), key(i),
+        put(get_parameter(np, internal_np::orientation_component_map), key_of(i),
             oriented && orientation.part[i] != internal::Normal_orientation::no_part ? std::size_t(orientation.part[i])
                                                                                      : std::size_t(-1));
       if constexpr (internal::has_parameter<NamedParameters, internal_np::orientation_confidence_map_t>())
-        put(get_parameter(np, internal_np::orientation_confidence_map), key(i),
+        put(get_parameter(np, internal_np::orientation_confidence_map), key_of(i),
             oriented ? double(orientation.confidence[i]) : 0.0);
     };
     const auto indices =
       boost::make_iterator_range(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(n));
-    using Worker = internal::Point_set_worker<given, std::decay_t<decltype(normal_map)>, decltype(key)>;
+    using Worker = internal::Point_set_worker<given, std::decay_t<decltype(normal_map)>, decltype(key_of)>;
     internal::for_each_vertex<ConcurrencyTag, false>(
       indices,
       Worker{internal::Point_set_estimator(search, settings, neighbors, oriented ? &rings : nullptr, use_fallbacks),
-             normal_map, &key},
+             normal_map, &key_of},
       store);
   };
   if constexpr (internal::has_parameter<NamedParameters, ::CGAL::internal_np::normal_t>())

@@ -15,6 +15,7 @@
 #include <boost/function_output_iterator.hpp>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cstdint>
@@ -25,8 +26,10 @@ namespace CGAL {
 namespace Curvature_estimation {
 namespace internal {
 
-// The points are Eigen vectors, stored once; the tree holds the indices of the
-// finite ones, so that a non-finite point is never anyone's neighbor.
+// The points are stored once, in the order of a Morton curve over their bounding
+// box (queries in that order find their neighbors in the cache): an index here is
+// a position in that order, original(i) the point's in the input. The tree holds
+// the finite points only, so that a non-finite point is never anyone's neighbor.
 class Point_set_search
 {
 public:
@@ -36,12 +39,15 @@ public:
   using Found = std::vector<std::pair<double, Index>>; // squared distance, index
 
   template <typename ConcurrencyTag>
-  Point_set_search(std::vector<Eigen::Vector3d> points, ConcurrencyTag)
-      : points_(std::move(points))
+  Point_set_search(const std::vector<Eigen::Vector3d>& points, ConcurrencyTag)
+      : order_(spatial_order(points))
       , map_{&points_}
       , tree_(Splitter(), Traits(map_))
       , distance_(map_)
   {
+    points_.reserve(points.size());
+    for (Index i : order_)
+      points_.push_back(points[i]);
     for (std::size_t i = 0; i < points_.size(); ++i)
       if (points_[i].allFinite()) {
         tree_.insert(Index(i));
@@ -57,6 +63,7 @@ public:
   std::size_t finite_size() const { return finite_; }
   const Eigen::Vector3d& point(std::size_t i) const { return points_[i]; }
   const std::vector<Eigen::Vector3d>& points() const { return points_; }
+  std::size_t original(std::size_t i) const { return order_[i]; }
 
   // The `count` points nearest to point i, i excluded, nearest first and ties by
   // index; fewer where the set has fewer.
@@ -116,6 +123,34 @@ private:
 
   Point_3 point_3(Index i) const { return get(map_, i); }
 
+  static std::vector<Index> spatial_order(const std::vector<Eigen::Vector3d>& points)
+  {
+    Eigen::AlignedBox3d box;
+    for (const Eigen::Vector3d& p : points)
+      if (p.allFinite())
+        box.extend(p);
+    const Eigen::Vector3d scale =
+      (double(1 << 21) - 1) * (box.sizes().array() > 0).select(box.sizes().cwiseInverse(), 0);
+    std::vector<std::pair<std::uint64_t, Index>> keys(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      std::uint64_t key = ~std::uint64_t(0); // the non-finite points last
+      if (points[i].allFinite()) {
+        key = 0;
+        const Eigen::Vector3d q = (points[i] - box.min()).cwiseProduct(scale);
+        for (int bit = 20; bit >= 0; --bit)
+          for (int c = 0; c < 3; ++c)
+            key = (key << 1) | ((std::uint64_t(q[c]) >> bit) & 1);
+      }
+      keys[i] = {key, Index(i)};
+    }
+    std::sort(keys.begin(), keys.end());
+    std::vector<Index> order(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i)
+      order[i] = keys[i].second;
+    return order;
+  }
+
+  std::vector<Index> order_;
   std::vector<Eigen::Vector3d> points_;
   Point_map map_;
   Tree tree_;
