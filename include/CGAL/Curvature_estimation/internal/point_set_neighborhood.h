@@ -35,8 +35,8 @@ struct Point_set_rings
 
 // Ring r is the k 2^(r-1) nearest neighbors (k = `neighbors`), or with a
 // `radius` (neighbors 0) ring 1 is the points within it and the ball grows from
-// it. With `rings`, the first ring and the first-order normal (oriented) are read
-// from it; else found here, the normal with the sign that makes its largest
+// it. With `rings`, the first ring and the side of the first-order normal are
+// read from it; else found here, the normal with the sign that makes its largest
 // coordinate positive.
 class Point_set_neighborhood
 {
@@ -118,9 +118,15 @@ public:
   Eigen::Vector3d initial_normal(Vertex v, Vertex_normal_method, bool, const std::vector<Eigen::Vector3d>& offsets,
                                  const std::vector<char>&, double) const
   {
-    if (rings_ != nullptr)
-      return rings_->normals[v].cast<double>();
-    return plane_normal(offsets.data(), ring_end(1));
+    if (rings_ == nullptr)
+      return plane_normal(offsets.data(), ring_end(1));
+    // The oriented normal is stored in floats: it gives the side only, so that
+    // the fit's frame does not depend on the orientation.
+    const Eigen::Vector3d oriented = rings_->normals[v].cast<double>();
+    if (oriented.isZero())
+      return oriented;
+    const Eigen::Vector3d normal = plane_normal(offsets.data(), ring_end(1));
+    return normal.dot(oriented) < 0 ? Eigen::Vector3d(-normal) : normal;
   }
 
   // The normal of the least-squares plane of `count` points, its largest coordinate positive.
