@@ -191,44 +191,97 @@ Normal_orientation oriented_rings(const Point_set_search& search, std::size_t ne
 /// min_curvature == 1/r`. A point that cannot be estimated (non-finite, fewer neighbors than the fit
 /// has unknowns, neighbors on a line) gets NaN in every output. Only the outputs passed are written.
 ///
+/// Statuses: `ok`, the fit over the starting neighborhood; `widened`, over 2k or 4k neighbors (or a
+/// grown ball); `fallback`, at degrees 3 and 4 the fit of degree 2 where no neighborhood conditions
+/// the fit of `fit_degree` (not with `use_fallbacks(false)`); `not_estimable`, NaN in every output.
+///
+/// \ceConcurrencyTag
 /// \tparam PointRange a model of `Range` (`CGAL::Point_set_3` or any range with a `point_map`); the
-///         output maps are keyed by its value type.
+///         property maps are keyed by its value type (`Point_set_3`'s index for a `Point_set_3`).
+/// \tparam NamedParameters a sequence of named parameters, built with the functions of
+///         `CGAL::Curvature_estimation::parameters`
+/// \param points the points
+/// \param np an optional sequence of named parameters among the ones listed below
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{point_map}
 ///     \cgalParamDescription{the points of the range's elements}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the range's value type as key type and `GT::Point_3` as
+///       value type}
 ///     \cgalParamDefault{`CGAL::Identity_property_map`, or the point map of a `Point_set_3`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{normal_map}
-///     \cgalParamDescription{given normals (read, not written), which set the fit's plane and orient the result}
-///     \cgalParamDefault{none; for a `Point_set_3`, its normal map if it has one}
+///     \cgalParamDescription{given normals (read, not written; they need not be unit), which set the fit's plane
+///       and orient the result}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the range's value type as key type and `GT::Vector_3`
+///       as value type}
+///     \cgalParamDefault{none: normals fitted and oriented by the propagation; for a `Point_set_3`, its normal map
+///       if it has one}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class}
+///     \cgalParamType{a class model of `Kernel`}
+///     \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_neighbors}
-///     \cgalParamDescription{the neighbors of a point's fit}
-///     \cgalParamDefault{16, 32 and 64 at fit_degree 2, 3 and 4}
+///     \cgalParamDescription{the neighbors of a point's fit: the k nearest points (exactly those; ties by position)}
+///     \cgalParamType{`std::size_t`, at least 3}
+///     \cgalParamDefault{16, 32 and 64 at fit_degree 2, 3 and 4 (chosen by measurement, see the User Manual,
+///       Point sets)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{neighbor_radius}
-///     \cgalParamDescription{instead, the points within this distance (grown by 25% steps up to twice where too few)}
+///     \cgalParamDescription{instead of `number_of_neighbors`: the points within this distance, the ball grown by
+///       25% steps up to twice the radius where too few or ill-conditioned; not with `number_of_neighbors`}
+///     \cgalParamType{`double`, positive and finite, in the units of the points}
+///     \cgalParamDefault{none: `number_of_neighbors`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{fit_degree}
-///     \cgalParamDescription{the degree of the fitted polynomial: 2, 3 or 4}
+///     \cgalParamDescription{the degree of the fitted polynomial}
+///     \cgalParamType{`int`, 2, 3 or 4}
 ///     \cgalParamDefault{`2`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{neighborhood_rings}
+///     \cgalParamDescription{the neighborhood a fit starts with: ring r is the k 2^(r-1) nearest neighbors}
+///     \cgalParamType{`int`, at least 1}
+///     \cgalParamDefault{`1`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{max_neighborhood_rings}
+///     \cgalParamDescription{the widest neighborhood an ill-conditioned fit is widened to (status `widened`)}
+///     \cgalParamType{`int`, at least `neighborhood_rings`}
+///     \cgalParamDefault{`3`: up to 4k nearest neighbors}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{max_condition_number}
+///     \cgalParamDescription{the largest condition number of a fit's normal equations that is accepted (see the User
+///       Manual, Conditioning)}
+///     \cgalParamType{`double`, greater than 1}
+///     \cgalParamDefault{`1e3`}
 ///   \cgalParamNEnd
 ///   \ceUseFallbacksParameter
 ///   \cgalParamNBegin{unsigned_curvatures}
-///     \cgalParamDescription{whether each point takes the side where H >= 0 instead of an orientation}
+///     \cgalParamDescription{without given normals: whether each point takes the side where H >= 0 instead of the
+///       propagated orientation}
+///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{estimated_normal_map}
 ///     \cgalParamDescription{output: the unit normal of the fitted graph, oriented as the result}
+///     \cgalParamType{a model of `WritablePropertyMap` with the range's value type as key type and `GT::Vector_3` as
+///       value type}
+///     \cgalParamDefault{not computed}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{orientation_component_map}
-///     \cgalParamDescription{output (`std::size_t`): the connected part of the neighbor graph a point was
-///       oriented with, numbered from 0; `std::size_t(-1)` where not oriented (given normals, unsigned
-///       curvatures, no normal)}
+///     \cgalParamDescription{output: the connected part of the neighbor graph a point was oriented with, numbered
+///       from 0; `std::size_t(-1)` where not oriented (given normals, unsigned curvatures, no normal)}
+///     \cgalParamType{a model of `WritablePropertyMap` with the range's value type as key type and `std::size_t` as
+///       value type}
+///     \cgalParamDefault{not computed}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{orientation_confidence_map}
-///     \cgalParamDescription{output (`double` in [0, 1]): how surely the orientation holds; 0 where not oriented}
+///     \cgalParamDescription{output: how surely the orientation holds, in [0, 1] (the weakest agreement of normals
+///       on the point's path of the propagation, and how one-sided its part is); 0 where not oriented}
+///     \cgalParamType{a model of `WritablePropertyMap` with the range's value type as key type and `double` as value
+///       type}
+///     \cgalParamDefault{not computed}
 ///   \cgalParamNEnd
 ///   \ceSurfaceOutputParameters{K = k1 k2, `ok`\, `widened`\, `fallback` or `not_estimable`}
 /// \cgalNamedParamsEnd
