@@ -36,7 +36,7 @@ namespace CGAL {
 namespace Curvature_estimation {
 namespace internal {
 
-// The default number_of_neighbors at fit_degree 2, 3 and 4 (the manual's "Point sets").
+// The default number_of_neighbors at fit_degree 2, 3 and 4 (the manual's "Point sets" measures the error against k).
 constexpr std::size_t default_point_set_neighbors(int degree) { return degree == 2 ? 16 : degree == 3 ? 32 : 64; }
 
 template <typename T>
@@ -226,8 +226,8 @@ Normal_orientation oriented_rings(const Point_set_search& search, std::size_t ne
 ///   \cgalParamNBegin{number_of_neighbors}
 ///     \cgalParamDescription{the neighbors of a point's fit: the k nearest points (exactly those; ties by position)}
 ///     \cgalParamType{`std::size_t`, at least 3}
-///     \cgalParamDefault{16, 32 and 64 at fit_degree 2, 3 and 4 (chosen by measurement, see the User Manual,
-///       Point sets)}
+///     \cgalParamDefault{16, 32 and 64 at fit_degree 2, 3 and 4 (the error against k, with and without noise:
+///       see the User Manual, Point sets)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{neighbor_radius}
 ///     \cgalParamDescription{instead of `number_of_neighbors`: the points within this distance, the ball grown by
