@@ -36,8 +36,9 @@ CGAL_CURVATURE_ESTIMATION_INLINE double one_norm(const Matrix& N)
 // (|L_ij| on the diagonal, -|L_ij| below it) has M^-1 >= |L^-1| entrywise
 // (Higham, Accuracy and Stability of Numerical Algorithms, section 8.3).
 template <int Size, int n>
-CGAL_CURVATURE_ESTIMATION_INLINE double comparison_bound(const typename Packed_cholesky<Size>::Triangle& L,
-                        const typename Packed_cholesky<Size>::Diagonal& inverse_diagonal)
+CGAL_CURVATURE_ESTIMATION_INLINE double
+comparison_bound(const typename Packed_cholesky<Size>::Triangle& L,
+                 const typename Packed_cholesky<Size>::Diagonal& inverse_diagonal)
 {
   double ones[n];
   std::fill(ones, ones + n, 1.0);

@@ -89,8 +89,8 @@ struct Packed_cholesky
   // entries of T off its diagonal read through `entry` (as they are to solve;
   // as -|L_ij| for the comparison matrix of condition_bounds.h).
   template <int n, typename Entry>
-  CGAL_CURVATURE_ESTIMATION_INLINE static void forward_substitution(const Triangle& L, const Diagonal& inverse_diagonal, const double (&b)[n],
-                                   Entry entry, double (&y)[n])
+  CGAL_CURVATURE_ESTIMATION_INLINE static void forward_substitution(const Triangle& L, const Diagonal& inverse_diagonal,
+                                                                    const double (&b)[n], Entry entry, double (&y)[n])
   {
     CGAL_CURVATURE_ESTIMATION_UNROLL
     for (int i = 0; i < n; ++i) {
@@ -102,8 +102,9 @@ struct Packed_cholesky
     }
   }
   template <int n, typename Entry>
-  CGAL_CURVATURE_ESTIMATION_INLINE static void backward_substitution(const Triangle& L, const Diagonal& inverse_diagonal, const double (&b)[n],
-                                    Entry entry, double (&y)[n])
+  CGAL_CURVATURE_ESTIMATION_INLINE static void backward_substitution(const Triangle& L,
+                                                                     const Diagonal& inverse_diagonal,
+                                                                     const double (&b)[n], Entry entry, double (&y)[n])
   {
     CGAL_CURVATURE_ESTIMATION_UNROLL
     for (int i = n - 1; i >= 0; --i) {
@@ -117,7 +118,8 @@ struct Packed_cholesky
 
   // x with N x = b: L y = b, then L^T x = y.
   template <int n>
-  CGAL_CURVATURE_ESTIMATION_INLINE static void solve(const Triangle& L, const Diagonal& inverse_diagonal, const double (&b)[n], double (&x)[n])
+  CGAL_CURVATURE_ESTIMATION_INLINE static void solve(const Triangle& L, const Diagonal& inverse_diagonal,
+                                                     const double (&b)[n], double (&x)[n])
   {
     const auto entry = [](double value) { return value; };
     double y[n];
