@@ -38,7 +38,7 @@ public:
       active_ = true;
       outside_.clear();
       inside_.assign(vertices.size(), 0);
-      size_ = 0;
+      joined_.clear();
       add(vertices, 0);
       for (std::size_t i = 1; i < one_ring_end; ++i) {
         const double d = squared_distance(vertices[i]);
@@ -73,7 +73,10 @@ public:
   }
 
   bool inside(std::size_t i) const { return inside_[i] != 0; }
-  std::size_t size() const { return size_; }
+  std::size_t size() const { return joined_.size(); }
+  // The place in the vertices of the k-th vertex to join the ball (k < size()):
+  // those of a smaller ball join first.
+  std::size_t joined(std::size_t k) const { return joined_[k]; }
   // Whether w was met next to the ball but outside it.
   bool met_outside(const Vertex& w) const
   {
@@ -96,7 +99,7 @@ private:
     }
     inside_[index] = 1;
     to_expand_.push_back(vertices[index]);
-    ++size_;
+    joined_.push_back(index);
   }
 
   // A vertex met next to the ball but outside it; index: where gathered (the
@@ -108,8 +111,8 @@ private:
     std::size_t index;
   };
   bool active_ = false;
-  std::vector<char> inside_; // per gathered vertex
-  std::size_t size_ = 0;
+  std::vector<char> inside_;        // per gathered vertex
+  std::vector<std::size_t> joined_; // the vertices in the ball, in the order they joined
   std::vector<Outside> outside_;
   std::vector<Vertex> to_expand_; // in the ball, their neighbors still to be met
 };

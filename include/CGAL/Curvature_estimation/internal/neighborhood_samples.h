@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <utility>
@@ -30,6 +31,8 @@ namespace internal {
 //                                           the rings of v, one more at a time
 //   grow_ball(radius, center), inside_ball(i), ball_size()
 //                                           after start(v), instead of extend(): the ball
+//   ball_joined(k)                          the place in vertices() of the k-th to join
+//                                           the ball (for the scale selection)
 //   center_on_border(v)                     after start(v)
 //   gathers_for_normal(method)              whether initial_normal needs the gathered 1-ring
 //   initial_normal(v, method, gathered, offsets, finite, scale)
@@ -88,6 +91,19 @@ public:
     return true;
   }
 
+  // `normal` normalized where given, else the first-order normal by `method`
+  // (after gather(v)); false where there is none.
+  bool unit_normal(Vertex v, const Vector* normal, Vertex_normal_method method, Vector& unit) const
+  {
+    if (normal == nullptr)
+      return first_order_normal(v, method, true, unit);
+    const double length = normal->norm();
+    if (!(length > 0) || !std::isfinite(length))
+      return false;
+    unit = *normal / length;
+    return true;
+  }
+
   // The normal of the least-squares hyperplane of the vertex and its 1-ring.
   Vector one_ring_hyperplane_normal() const
   {
@@ -124,6 +140,31 @@ public:
       ring_samples([](const Vector& q) { return std::exp(-q.squaredNorm()); });
     else
       ring_samples([](const Vector&) { return 1.0; });
+  }
+
+  // Calls add(x, height) for each finite sample of the ball, in the frame, from
+  // the `first`-th to join it on; returns the number that have joined.
+  template <typename Add>
+  std::size_t for_each_joined_sample(const Frame& frame, std::size_t first, const Add& add) const
+  {
+    const Eigen::Matrix<double, D, N> to_tangent = frame.tangents.transpose();
+    const std::size_t size = neighborhood_.ball_size();
+    for (std::size_t k = first; k < size; ++k) {
+      const std::size_t i = neighborhood_.ball_joined(k);
+      if (finite_[i])
+        add(tangent_coordinates(to_tangent, offsets_[i]), frame.normal.dot(offsets_[i]));
+    }
+    return size;
+  }
+
+  // The largest distance from the vertex to a finite sample of its 1-ring, in units of scale().
+  double one_ring_radius() const
+  {
+    double squared = 0;
+    for (std::size_t i = 1; i < neighborhood_.ring_end(1); ++i)
+      if (finite_[i])
+        squared = (std::max)(squared, offsets_[i].squaredNorm());
+    return std::sqrt(squared);
   }
 
   // A q for A = T^T, as Eigen's product sums it; in R^3 in place (Eigen's

@@ -175,9 +175,11 @@ public:
     return more;
   }
 
-  // After grow_ball: whether vertices()[i] is in the ball, and their number.
+  // After grow_ball: whether vertices()[i] is in the ball, their number, and the
+  // place in vertices() of the k-th to join it.
   bool inside_ball(std::size_t i) const { return ball_.inside(i); }
   std::size_t ball_size() const { return ball_.size(); }
+  std::size_t ball_joined(std::size_t k) const { return ball_.joined(k); }
 
   // Number of rings gathered (1 after start()).
   int rings() const { return static_cast<int>(ring_ends_.size()) - 1; }

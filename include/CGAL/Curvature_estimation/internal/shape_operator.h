@@ -64,6 +64,16 @@ graph_curvature(const Eigen::Matrix<double, N - 1, N - 1>& hessian, const Eigen:
   return result;
 }
 
+// The mean of the curvatures of graph_curvature, without its eigenvectors:
+// -tr(G^-1 C) / (D l).
+template <int D>
+double graph_mean_curvature(const Eigen::Matrix<double, D, D>& hessian, const Eigen::Matrix<double, D, 1>& gradient)
+{
+  const double gradient_norm2 = gradient.squaredNorm();
+  const double trace = hessian.trace() - gradient.dot(hessian * gradient) / (1.0 + gradient_norm2);
+  return -trace / (D * std::sqrt(1.0 + gradient_norm2));
+}
+
 } // namespace internal
 } // namespace Curvature_estimation
 } // namespace CGAL

@@ -19,11 +19,11 @@ namespace Curvature_estimation {
 namespace internal {
 
 // `Unknowns` height sums: the first accumulated rows of the tables.
-template <int D, int FirstOrder, int LastOrder, int Unknowns>
+template <int D, int FirstOrder, int LastOrder, int Unknowns, bool QuarticMoments>
 class Moments
 {
 public:
-  using Tables = Monomial_tables<D, FirstOrder, LastOrder>;
+  using Tables = Monomial_tables<D, FirstOrder, LastOrder, QuarticMoments>;
   using Point = Eigen::Matrix<double, D, 1>;
   static constexpr Tables tables{};
   // Whether the sums are added in pairs (fill_windows): surfaces at degrees 3 and 4.

@@ -19,13 +19,21 @@ struct Monomial_exponents
   int power[3] = {0, 0, 0};
 };
 
+// Whether the moments of Taylor_fit<D, FirstOrder, LastOrder> reach degree
+// LastOrder + 4 by default: the surfaces' cubic fit with the gradient.
+constexpr bool default_quartic_moments(int D, int FirstOrder, int LastOrder)
+{
+  return D == 2 && FirstOrder == 1 && LastOrder == 3;
+}
+
 // The tested monomials of Taylor_fit<D, FirstOrder, LastOrder> (row, scale) and
 // the moments sum w x^a of its normal matrix: entry k = (i, j) of its packed lower
 // triangle is entry_scale[k] moment[entry_moment[k]]. Where paired, the pairs come
 // first, each at an even index (a pair split across cache lines stalls the sums).
-template <int D, int FirstOrder, int LastOrder>
+template <int D, int FirstOrder, int LastOrder, bool QuarticMoments = default_quartic_moments(D, FirstOrder, LastOrder)>
 struct Monomial_tables
 {
+  static_assert(!QuarticMoments || (D == 2 && LastOrder <= 3), "the curvature's quartic term is that of a surface");
   static constexpr bool paired = D == 2 && LastOrder >= 3;
   static constexpr int tested = (FirstOrder == 0 ? 1 : 0) + D + number_of_monomials(D, 2) +
                                 (LastOrder >= 3 ? number_of_monomials(D, 3) : 0) +
@@ -34,7 +42,7 @@ struct Monomial_tables
   static constexpr int lowest_degree = FirstOrder == 0 ? 0 : 2;
   // Whether the moments reach degree LastOrder + 4, so that the heights less the
   // curvature's quartic term need no second pass over the samples (curvature_quartic.h).
-  static constexpr bool quartic_moments = D == 2 && FirstOrder == 1 && LastOrder == 3;
+  static constexpr bool quartic_moments = QuarticMoments;
   // The degree of the highest moment.
   static constexpr int highest_degree = quartic_moments ? LastOrder + 4 : 2 * LastOrder;
   static constexpr int moments()

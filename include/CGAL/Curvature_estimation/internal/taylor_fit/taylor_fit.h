@@ -29,7 +29,7 @@ namespace CGAL {
 namespace Curvature_estimation {
 namespace internal {
 
-template <int D, int FirstOrder, int LastOrder>
+template <int D, int FirstOrder, int LastOrder, bool QuarticMoments = default_quartic_moments(D, FirstOrder, LastOrder)>
 class Taylor_fit
 {
   static_assert(FirstOrder >= 0 && FirstOrder <= 2 && LastOrder >= 2 && LastOrder <= 4, "orders out of range");
@@ -41,7 +41,7 @@ public:
   static constexpr bool constant_term = FirstOrder == 0;
   static constexpr bool linear_terms = FirstOrder <= 1;
   static constexpr int last_order = LastOrder;
-  static constexpr bool quartic_moments = Monomial_tables<D, FirstOrder, LastOrder>::quartic_moments;
+  static constexpr bool quartic_moments = QuarticMoments;
   static constexpr int unknowns =
     (constant_term ? 1 : 0) + (linear_terms ? D : 0) + number_of_monomials(D, 2) + higher_orders;
   // The monomials of the whitened test: those of orders min(FirstOrder, 1) to
@@ -188,9 +188,39 @@ public:
   const Hessian& hessian() const { return hessian_; }
   const Point& gradient() const { return gradient_; }
 
+  // After an accepted solve: the variance of the mean of the Hessian's diagonal
+  // (the mean curvature where the gradient is zero) per unit variance of the
+  // heights, for unit weights and independent heights: l^T M^-1 l.
+  double mean_curvature_variance() const
+  {
+    double mean_of_diagonal[unknowns] = {};
+    for (int i = 0, column = 0; i < D; column += D - i, ++i)
+      mean_of_diagonal[column] = 1.0 / D;
+    double solution[unknowns];
+    Cholesky::template solve<unknowns>(factor_, inverse_diagonal_, mean_of_diagonal, solution);
+    double variance = 0;
+    for (int i = 0; i < unknowns; ++i)
+      variance += mean_of_diagonal[i] * solution[i];
+    return variance;
+  }
+
+  // After an accepted solve: the weighted residual sum of squares of the fit, from
+  // the sum of the samples' weighted squared heights (which the fit does not keep).
+  double residual_sum_of_squares(double weighted_squared_heights) const
+  {
+    double scaled[unknowns];
+    right_hand_side(scaled);
+    double coefficients[unknowns];
+    Cholesky::template solve<unknowns>(factor_, inverse_diagonal_, scaled, coefficients);
+    double explained = 0;
+    for (int i = 0; i < unknowns; ++i)
+      explained += scaled[i] * coefficients[i];
+    return (std::max)(weighted_squared_heights - explained, 0.0);
+  }
+
 private:
-  using Tables = Monomial_tables<D, FirstOrder, LastOrder>;
-  using Moments_type = Moments<D, FirstOrder, LastOrder, unknowns>;
+  using Tables = Monomial_tables<D, FirstOrder, LastOrder, QuarticMoments>;
+  using Moments_type = Moments<D, FirstOrder, LastOrder, unknowns, QuarticMoments>;
   using Cholesky = Packed_cholesky<tested>;
   static_assert(Tables::tested == tested, "the tables' rows are the tested monomials");
   static constexpr double half_sqrt2 = 0.70710678118654752440;
@@ -200,12 +230,17 @@ private:
   void solve_with_factor()
   {
     double scaled[unknowns];
-    CGAL_CURVATURE_ESTIMATION_UNROLL
-    for (int i = 0; i < unknowns; ++i)
-      scaled[i] = Moments_type::tables.scale[i] * sums_.height_sum(Moments_type::tables.row_slot[i]);
+    right_hand_side(scaled);
     double coefficients[unknowns];
     Cholesky::template solve<unknowns>(factor_, inverse_diagonal_, scaled, coefficients);
     set_coefficients(coefficients);
+  }
+
+  CGAL_CURVATURE_ESTIMATION_INLINE void right_hand_side(double (&scaled)[unknowns]) const
+  {
+    CGAL_CURVATURE_ESTIMATION_UNROLL
+    for (int i = 0; i < unknowns; ++i)
+      scaled[i] = Moments_type::tables.scale[i] * sums_.height_sum(Moments_type::tables.row_slot[i]);
   }
 
   // The Hessian and gradient from the coefficients of the monomials of x.
@@ -262,6 +297,9 @@ using Gradient_fit = Taylor_fit<D, 1, Degree>;
 // with the height at the vertex too (an intercept), so that the vertex is a sample like the others.
 template <int D, int Degree>
 using Intercept_fit = Taylor_fit<D, 0, Degree>;
+// The same on a surface, with the moments that subtract_curvature_quartic needs.
+template <int Degree>
+using Quartic_intercept_fit = Taylor_fit<2, 0, Degree, true>;
 
 } // namespace internal
 } // namespace Curvature_estimation
