@@ -119,7 +119,8 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag, typename FaceGraph,
           typename NamedParameters = parameters::Default_named_parameters>
 void gauss_map_curvatures(const FaceGraph& g, const NamedParameters& np = parameters::default_values())
 {
-  const internal::Fit_parameters fit = internal::fit_parameters(np, "gauss_map_curvatures", true);
+  const internal::Fit_parameters fit =
+    internal::fit_parameters(np, "gauss_map_curvatures", internal::Neighborhoods::rings_or_ball);
   const internal::Gauss_map_differential_method method = internal::gauss_map_differential_method(np);
   if (fit.settings.ball_radius > 0 && method != internal::Gauss_map_differential_method::least_squares_2_ring)
     throw std::invalid_argument("gauss_map_curvatures: ball_radius is for the least-squares differential, "

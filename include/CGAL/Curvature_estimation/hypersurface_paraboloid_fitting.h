@@ -154,8 +154,8 @@ void hypersurface_paraboloid_fitting_curvatures(const TetrahedralComplex& comple
   using Stars = Tetrahedral_complex_stars<TetrahedralComplex>;
   using Fitter = internal::Hypersurface_fitter<Stars>;
 
-  const internal::Fit_parameters fit =
-    internal::curvature_fit_parameters(np, "hypersurface_paraboloid_fitting_curvatures", 3, true);
+  const internal::Fit_parameters fit = internal::curvature_fit_parameters(
+    np, "hypersurface_paraboloid_fitting_curvatures", 3, internal::Neighborhoods::rings_or_ball);
   if (fit.normal_method != Vertex_normal_method::quadric_fit &&
       fit.normal_method != Vertex_normal_method::area_weighted)
     throw std::invalid_argument("hypersurface_paraboloid_fitting_curvatures: vertex_normal_method must be "

@@ -22,7 +22,9 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -45,8 +47,10 @@ public:
   using Local_kernel = CGAL::Simple_cartesian<double>;
   using Monge_fitting = CGAL::Monge_via_jet_fitting<Local_kernel>;
 
+  // `radius_range`: where given, the scale selection's (and no ball_radius).
   Jet_fitter(const FaceGraph& g, VertexPointMap vpm, int jet_degree, int monge_degree, int rings, int max_rings,
-             double max_condition, double ball_radius, bool use_fallbacks = true)
+             double max_condition, double ball_radius, bool use_fallbacks = true,
+             const Radius_range& radius_range = Radius_range())
       : g_(&g)
       , vpm_(vpm)
       , jet_degree_(jet_degree)
@@ -57,27 +61,41 @@ public:
       , ball_radius_(ball_radius)
       , use_fallbacks_(use_fallbacks)
       , paraboloid_(g, vpm, Fit_parameters{Fit_settings(), Vertex_normal_method::quadric_fit})
-  {}
+  {
+    if (radius_range.given()) {
+      Fit_settings selection;
+      selection.degree = (std::max)(jet_degree, 2);
+      selection.radius_range = radius_range;
+      selector_.emplace(Face_graph_neighborhood<FaceGraph, VertexPointMap>(g, vpm, vertex_adjacency(g)), selection);
+    }
+  }
 
   // CGAL's fit normal.
   static constexpr bool uses_given_normals = false;
 
   // The fallback chain: CGAL's fit; where it is ill-conditioned on every
   // neighborhood, the paraboloid fit with its defaults and its own fallbacks,
-  // whose conditioning test accepts anisotropic neighborhoods.
+  // whose conditioning test accepts anisotropic neighborhoods. Under scale
+  // selection, that estimate or CGAL's fit over the selected ball
+  // (select_estimate, the selection by this package's fits of the jet's degree in
+  // the frame of the area-weighted normal).
   Surface_estimate estimate(vertex_descriptor v, const Eigen::Vector3d*)
   {
-    return estimate_with_fallbacks<Surface_estimate>(
-      use_fallbacks_, [&] { return accepted_or_refused(fit(v)); },
+    const Surface_estimate estimate = estimate_with_fallbacks<Surface_estimate>(
+      use_fallbacks_, [&] { return accepted_or_refused(fit(v, ball_radius_)); },
       fallback(Tried_where::refused, [&] { return accepted_or_refused(paraboloid_.estimate(v, nullptr)); }));
+    if (!selector_)
+      return estimate;
+    return select_estimate(estimate, selector_->select(v, nullptr, Vertex_normal_method::area_weighted),
+                           [&](double radius) { return fit(v, radius); });
   }
 
 private:
   // The fit over the rings (the vertex first, as CGAL requires), widened until
   // there are enough points for the jet's coefficients (a precondition CGAL
   // checks only in debug builds) and CGAL's condition number is at most
-  // `max_condition_`, or over the ball.
-  Surface_estimate fit(vertex_descriptor v)
+  // `max_condition_`, or over the ball of `ball_radius` where positive.
+  Surface_estimate fit(vertex_descriptor v, double ball_radius)
   {
     const Eigen::Vector3d center = point_in_double(vpm_, v);
     const Eigen::Vector3d orientation = face_average_normal(v, *g_, vpm_, Vertex_normal_method::area_weighted);
@@ -87,12 +105,12 @@ private:
 
     collector_.start(v, *g_);
     Surface_estimate e;
-    if (ball_radius_ > 0) {
+    if (ball_radius > 0) {
       const auto squared_distance = [&](vertex_descriptor w) {
         return (point_in_double(vpm_, w) - center).squaredNorm();
       };
       const int growths = fit_in_growing_ball(
-        ball_radius_, unknowns,
+        ball_radius, unknowns,
         [&](double radius) { return collector_.grow_ball(*g_, radius * radius, squared_distance); },
         [&] { return collector_.ball_size(); },
         [&] {
@@ -163,6 +181,7 @@ private:
   Ring_collector<FaceGraph> collector_;
   std::vector<Local_kernel::Point_3> points_;
   Paraboloid_estimator<FaceGraph, VertexPointMap> paraboloid_;
+  std::optional<Surface_scale_selector<FaceGraph, VertexPointMap>> selector_; // under scale selection
 };
 
 } // namespace internal
@@ -174,7 +193,8 @@ private:
 /// comparisons. The fit starts on `neighborhood_rings` rings and is widened, up to
 /// `max_neighborhood_rings`, until the rings hold the jet's (d+1)(d+2)/2 points and CGAL's condition
 /// number is at most `max_condition_number` (status `widened` where it grew). With `ball_radius(r)` the
-/// neighborhood is the ball of `paraboloid_fitting_curvatures()`, grown as there. The Monge normal is
+/// neighborhood is the ball of `paraboloid_fitting_curvatures()`, grown as there; `ball_radius_range`
+/// chooses its radius per vertex as there. The Monge normal is
 /// oriented like the area-weighted vertex normal, and CGAL's curvatures are converted to this package's
 /// sign (a sphere with outward normals has curvature 1/r). Where the fit is refused on every
 /// neighborhood, the fallback is `paraboloid_fitting_curvatures()` with its defaults (status `fallback`);
@@ -201,6 +221,7 @@ private:
 ///     \cgalParamDefault{`neighborhood_rings + 3`}
 ///   \cgalParamNEnd
 ///   \ceBallRadiusParameter
+///   \ceScaleSelectionParameters
 ///   \cgalParamNBegin{max_condition_number}
 ///     \cgalParamDescription{fits whose condition number (as CGAL computes it) is larger are widened; above 1}
 ///     \cgalParamDefault{`1e3`}
@@ -220,6 +241,7 @@ void jet_fitting_curvatures(const FaceGraph& g, const NamedParameters& np = para
   const int max_rings = internal::parameter_or(np, internal_np::max_neighborhood_rings, rings + 3);
   const double max_condition = internal::parameter_or(np, internal_np::max_condition_number, 1e3);
   const double ball_radius = internal::ball_radius_or_zero(np, "jet_fitting_curvatures");
+  const internal::Radius_range radius_range = internal::ball_radius_range_or_none(np, "jet_fitting_curvatures");
   const bool use_fallbacks = internal::parameter_or(np, internal_np::use_fallbacks, true);
   const std::string where = "jet_fitting_curvatures: ";
   if (jet_degree < 1 || jet_degree > 4 || monge_degree < 2 || monge_degree > jet_degree)
@@ -231,7 +253,7 @@ void jet_fitting_curvatures(const FaceGraph& g, const NamedParameters& np = para
 
   internal::estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
     return internal::Jet_fitter<FaceGraph, std::decay_t<decltype(vpm)>>(
-      g, vpm, jet_degree, monge_degree, rings, max_rings, max_condition, ball_radius, use_fallbacks);
+      g, vpm, jet_degree, monge_degree, rings, max_rings, max_condition, ball_radius, use_fallbacks, radius_range);
   });
 }
 

@@ -17,6 +17,8 @@
 #include <boost/graph/graph_traits.hpp>
 
 #include <cstddef>
+#include <memory>
+#include <optional>
 #include <type_traits>
 
 namespace CGAL {
@@ -31,28 +33,42 @@ public:
   using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
 
   Paraboloid_estimator(const FaceGraph& g, VertexPointMap vpm, const Fit_parameters& fit, bool use_fallbacks = true)
-      : fitter_(g, vpm, fit.settings)
-      , method_(fit.normal_method)
-      , use_fallbacks_(use_fallbacks)
-      , gauss_map_(g, vpm,
-                   Vertex_normal_estimator<FaceGraph, VertexPointMap>{
-                     Surface_fitter<FaceGraph, VertexPointMap>(g, vpm, fit.settings, nullptr), fit.normal_method, true})
+      : Paraboloid_estimator(g, vpm, fit, use_fallbacks,
+                             Surface_fitter<FaceGraph, VertexPointMap>::adjacency_for(g, fit.settings))
   {}
 
   // The fallback chain: the fit of fit_degree; where it is refused, at fit_degree
   // 3 and 4 over rings, the fit of degree 2; with the fitted normal and no given
   // one, the plane-frame fit (also where only the whitened test accepted the fit
-  // of degree 2 at a boundary vertex), then the Gauss map.
+  // of degree 2 at a boundary vertex), then the Gauss map. Under scale selection,
+  // that estimate or the fit over the selected ball (select_estimate).
   Surface_estimate estimate(vertex_descriptor v, const Eigen::Vector3d* given)
   {
-    return estimate_with_fallbacks<Surface_estimate>(
+    const Surface_estimate estimate = estimate_with_fallbacks<Surface_estimate>(
       use_fallbacks_, [&] { return fit(v, given); },
       fallback(Tried_where::refused, [&] { return degree_two_fit(v, given); }),
       fallback(Tried_where::refused_or_provisional, [&] { return plane_frame_fit(v, given); }),
       fallback(Tried_where::refused, [&] { return gauss_map_fit(v, given); }));
+    if (!selector_)
+      return estimate;
+    return select_estimate(estimate, selector_->select(v, given, method_),
+                           [&](double radius) { return fitter_.ball_fit(v, given, method_, radius).estimate; });
   }
 
 private:
+  Paraboloid_estimator(const FaceGraph& g, VertexPointMap vpm, const Fit_parameters& fit, bool use_fallbacks,
+                       std::shared_ptr<const Vertex_adjacency> adjacency)
+      : fitter_(g, vpm, fit.settings, adjacency)
+      , method_(fit.normal_method)
+      , use_fallbacks_(use_fallbacks)
+      , gauss_map_(g, vpm,
+                   Vertex_normal_estimator<FaceGraph, VertexPointMap>{
+                     Surface_fitter<FaceGraph, VertexPointMap>(g, vpm, fit.settings, nullptr), fit.normal_method, true})
+  {
+    if (fit.settings.selects_radius())
+      selector_.emplace(Face_graph_neighborhood<FaceGraph, VertexPointMap>(g, vpm, adjacency), fit.settings);
+  }
+
   Link_result<Surface_estimate> fit(vertex_descriptor v, const Eigen::Vector3d* given)
   {
     const Vertex_fit<Surface_estimate> r = given != nullptr ? fitter_.fit(v, *given) : fitter_.fit(v, method_);
@@ -92,6 +108,7 @@ private:
   Vertex_normal_method method_;
   bool use_fallbacks_;
   Gauss_map_estimator<FaceGraph, VertexPointMap, Vertex_normal_estimator<FaceGraph, VertexPointMap>> gauss_map_;
+  std::optional<Surface_scale_selector<FaceGraph, VertexPointMap>> selector_; // under scale selection
 };
 
 } // namespace internal
@@ -106,7 +123,8 @@ private:
 /// With a `vertex_normal_map` the fit is Hamann's paraboloid in the frame of the given normals. By
 /// default the normal is fitted too (second order, also at boundary vertices) and the curvature fit
 /// keeps the gradient. `fit_degree(3)` and `fit_degree(4)` fit polynomials of those degrees over 2 and
-/// 3 rings; `ball_radius(r)` fits over the ball of radius r instead of rings, for noisy meshes. A fit
+/// 3 rings; `ball_radius(r)` fits over the ball of radius r instead of rings, for noisy meshes;
+/// `ball_radius_range(min, max)` chooses that radius per vertex (scale selection). A fit
 /// whose normal equations are ill-conditioned is widened ring by ring (status `widened`); where no
 /// ring determines it, the fallbacks serve (status `fallback`). The User Manual ("Paraboloid fitting")
 /// gives the details and the measurements behind each choice.
@@ -129,6 +147,7 @@ private:
 ///     \cgalParamDefault{`2`}
 ///   \cgalParamNEnd
 ///   \ceBallRadiusParameter
+///   \ceScaleSelectionParameters
 ///   \ceBallWeightingParameter
 ///   \ceRingParameters
 ///   \ceUseFallbacksParameter
@@ -140,7 +159,8 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag, typename FaceGraph,
           typename NamedParameters = parameters::Default_named_parameters>
 void paraboloid_fitting_curvatures(const FaceGraph& g, const NamedParameters& np = parameters::default_values())
 {
-  const internal::Fit_parameters fit = internal::curvature_fit_parameters(np, "paraboloid_fitting_curvatures", 4, true);
+  const internal::Fit_parameters fit = internal::curvature_fit_parameters(
+    np, "paraboloid_fitting_curvatures", 4, internal::Neighborhoods::rings_ball_or_selected);
   const bool use_fallbacks = internal::parameter_or(np, internal_np::use_fallbacks, true);
   internal::estimate_surface_curvatures<ConcurrencyTag>(g, np, [&](const auto& vpm) {
     return internal::Paraboloid_estimator<FaceGraph, std::decay_t<decltype(vpm)>>(g, vpm, fit, use_fallbacks);

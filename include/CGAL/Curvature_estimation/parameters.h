@@ -45,7 +45,10 @@
   X(estimated_normal_map_t, estimated_normal_map)                                                                      \
   X(orientation_component_map_t, orientation_component_map)                                                            \
   X(orientation_confidence_map_t, orientation_confidence_map)                                                          \
-  X(unsigned_curvatures_t, unsigned_curvatures)
+  X(unsigned_curvatures_t, unsigned_curvatures)                                                                        \
+  X(ball_radius_range_t, ball_radius_range)                                                                            \
+  X(vertex_ball_radius_map_t, vertex_ball_radius_map)                                                                  \
+  X(vertex_noise_map_t, vertex_noise_map)
 #define CGAL_CE_PACKAGE_PARAMETERS(X)                                                                                  \
   CGAL_CE_PARAMETERS_SHARED_WITH_CGAL_6(X)                                                                             \
   CGAL_CE_OWN_PARAMETERS(X)
@@ -165,6 +168,47 @@ auto parameter_or(const NamedParameters& np, Tag tag, const T& default_value)
   return ::CGAL::parameters::choose_parameter(::CGAL::parameters::get_parameter(np, tag), default_value);
 }
 
+// The radii between which the scale selection chooses, in the mesh's units;
+// max == 0 where `np` asks for none.
+struct Radius_range
+{
+  double min = 0;
+  double max = 0;
+  bool given() const { return max > 0; }
+};
+
+// The `ball_radius_range` of `np` (a pair min, max). Throws std::invalid_argument
+// where it is given with `ball_radius`, or not with 0 < min <= max, both finite, or
+// where an output of the selection is asked for without it.
+template <typename NamedParameters>
+Radius_range ball_radius_range_or_none(const NamedParameters& np, const char* caller)
+{
+  const std::string where = std::string(caller) + ": ";
+  Radius_range range;
+  if constexpr (has_parameter<NamedParameters, internal_np::ball_radius_range_t>()) {
+    const auto given = ::CGAL::parameters::get_parameter(np, internal_np::ball_radius_range);
+    range.min = static_cast<double>(given.first);
+    range.max = static_cast<double>(given.second);
+    if (!(range.min > 0 && range.min <= range.max && std::isfinite(range.max)))
+      throw std::invalid_argument(where + "ball_radius_range needs 0 < min <= max, finite");
+    if (has_parameter<NamedParameters, internal_np::ball_radius_t>())
+      throw std::invalid_argument(where + "ball_radius and ball_radius_range exclude each other");
+  } else if (has_parameter<NamedParameters, internal_np::vertex_ball_radius_map_t>() ||
+             has_parameter<NamedParameters, internal_np::vertex_noise_map_t>())
+    throw std::invalid_argument(where + "vertex_ball_radius_map and vertex_noise_map need ball_radius_range");
+  return range;
+}
+
+// The estimators without scale selection refuse its parameters rather than ignore them.
+template <typename NamedParameters>
+void reject_scale_selection(const char* caller)
+{
+  if (has_parameter<NamedParameters, internal_np::ball_radius_range_t>() ||
+      has_parameter<NamedParameters, internal_np::vertex_ball_radius_map_t>() ||
+      has_parameter<NamedParameters, internal_np::vertex_noise_map_t>())
+    throw std::invalid_argument(std::string(caller) + ": the scale selection (ball_radius_range) is not supported");
+}
+
 // Radius neighborhoods (CGAL 6's `ball_radius`) are implemented by the paraboloid
 // fits and jet fitting only: the other estimators refuse a pack that
 // sets it rather than ignore it, so that a chain written for CGAL's interpolated
@@ -175,6 +219,7 @@ void reject_ball_radius(const char* caller)
   if (has_parameter<NamedParameters, internal_np::ball_radius_t>())
     throw std::invalid_argument(std::string(caller) + ": ball_radius is not supported; neighborhoods are set in rings "
                                                       "(neighborhood_rings)");
+  reject_scale_selection<NamedParameters>(caller);
 }
 
 // The `ball_radius` of `np`, or 0 where it has none. Throws std::invalid_argument

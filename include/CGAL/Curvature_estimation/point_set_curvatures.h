@@ -299,7 +299,7 @@ void point_set_curvatures(PointRange& points, const NamedParameters& np = parame
     std::is_base_of<std::random_access_iterator_tag, typename std::iterator_traits<Iterator>::iterator_category>::value;
   const char* const caller = "point_set_curvatures";
 
-  internal::Fit_parameters fit = internal::curvature_fit_parameters(np, caller, 4, false);
+  internal::Fit_parameters fit = internal::curvature_fit_parameters(np, caller, 4, internal::Neighborhoods::rings);
   internal::Fit_settings& settings = fit.settings;
   settings.ring_intercept = true;
   settings.ball_radius = static_cast<double>(internal::parameter_or(np, ::CGAL::internal_np::neighbor_radius, 0.0));

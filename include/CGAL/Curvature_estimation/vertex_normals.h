@@ -112,7 +112,8 @@ void estimate_vertex_normals(const FaceGraph& g, VertexNormalMap normals,
   const GT traits = choose_parameter<GT>(get_parameter(np, ::CGAL::internal_np::geom_traits));
   const VPM vpm =
     internal::parameter_or(np, ::CGAL::internal_np::vertex_point, get_const_property_map(CGAL::vertex_point, g));
-  const internal::Fit_parameters fit = internal::curvature_fit_parameters(np, "estimate_vertex_normals", 4, true);
+  const internal::Fit_parameters fit =
+    internal::curvature_fit_parameters(np, "estimate_vertex_normals", 4, internal::Neighborhoods::rings_or_ball);
 
   constexpr bool write_status = internal::has_parameter<NamedParameters, internal_np::vertex_estimation_status_map_t>();
 

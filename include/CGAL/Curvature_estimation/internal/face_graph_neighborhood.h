@@ -10,6 +10,7 @@
 #include <CGAL/Curvature_estimation/internal/fit_settings.h>
 #include <CGAL/Curvature_estimation/internal/local_coordinates.h>
 #include <CGAL/Curvature_estimation/internal/rings.h>
+#include <CGAL/Curvature_estimation/internal/scale_selector.h>
 #include <CGAL/Curvature_estimation/internal/shape_operator.h>
 #include <CGAL/Curvature_estimation/internal/surface_estimate.h>
 #include <CGAL/Curvature_estimation/internal/vertex_fitter.h>
@@ -61,6 +62,7 @@ public:
   }
   bool inside_ball(std::size_t i) const { return rings_.inside_ball(i); }
   std::size_t ball_size() const { return rings_.ball_size(); }
+  std::size_t ball_joined(std::size_t k) const { return rings_.ball_joined(k); }
 
   // Face averages need no neighborhood.
   static bool gathers_for_normal(Vertex_normal_method method) { return method == Vertex_normal_method::quadric_fit; }
@@ -114,7 +116,7 @@ class Surface_fitter : public Vertex_fitter<Face_graph_neighborhood<FaceGraph, V
 {
 public:
   Surface_fitter(const FaceGraph& g, VertexPointMap vpm, const Fit_settings& settings)
-      : Surface_fitter(g, vpm, settings, beyond_one_ring(settings) ? vertex_adjacency(g) : nullptr)
+      : Surface_fitter(g, vpm, settings, adjacency_for(g, settings))
   {}
 
   // With the rings from `adjacency` (null: by halfedge circulation), for a fitter
@@ -125,12 +127,18 @@ public:
           Face_graph_neighborhood<FaceGraph, VertexPointMap>(g, vpm, std::move(adjacency)), settings)
   {}
 
-private:
-  static bool beyond_one_ring(const Fit_settings& settings)
+  // The adjacency that a fitter with `settings` reads its rings from (null: none).
+  static std::shared_ptr<const Vertex_adjacency> adjacency_for(const FaceGraph& g, const Fit_settings& settings)
   {
-    return settings.degree > 2 || settings.ball_radius > 0 || settings.rings > 1 || settings.boundary_rings > 1;
+    const bool beyond_one_ring = settings.degree > 2 || settings.ball_radius > 0 || settings.selects_radius() ||
+                                 settings.rings > 1 || settings.boundary_rings > 1;
+    return beyond_one_ring ? vertex_adjacency(g) : nullptr;
   }
 };
+
+// The scale selection at the vertices of a FaceGraph.
+template <typename FaceGraph, typename VertexPointMap>
+using Surface_scale_selector = Scale_selector<Face_graph_neighborhood<FaceGraph, VertexPointMap>>;
 
 } // namespace internal
 } // namespace Curvature_estimation

@@ -25,6 +25,7 @@ struct Fit_settings
   double max_condition = 1e3;
   int degree = 2;              // fit_degree
   double ball_radius = 0;      // > 0: the fits over the ball of this radius, not the rings
+  Radius_range radius_range;   // given: the radius selected per vertex in this range
   bool smooth_weights = false; // in the ball, Neighbor_weighting::smooth (else uniform)
   bool ring_intercept = false; // over rings too, the intercept fit of the degree (point sets)
   // Whether the whitened test may accept the widest neighborhood where the
@@ -34,6 +35,7 @@ struct Fit_settings
   int start_rings(bool on_border) const { return on_border ? boundary_rings : rings; }
   bool in_ball() const { return ball_radius > 0; }
   bool fits_intercept() const { return in_ball() || ring_intercept; }
+  bool selects_radius() const { return radius_range.given(); }
 };
 
 struct Fit_parameters
@@ -42,14 +44,25 @@ struct Fit_parameters
   Vertex_normal_method normal_method;
 };
 
-// The parameters from `np`; `caller` names the public function in error messages.
-// Throws std::invalid_argument where one is out of its range, or where
-// `ball_radius` is given and `with_ball_radius` is false.
-template <typename NamedParameters>
-Fit_parameters fit_parameters(const NamedParameters& np, const char* caller, bool with_ball_radius = false)
+// The neighborhoods a public function takes besides rings.
+enum class Neighborhoods
 {
-  if (!with_ball_radius)
+  rings,
+  rings_or_ball,         // and ball_radius
+  rings_ball_or_selected // and ball_radius_range
+};
+
+// The parameters from `np`; `caller` names the public function in error messages.
+// Throws std::invalid_argument where one is out of its range, or where a
+// neighborhood that `neighborhoods` excludes is asked for.
+template <typename NamedParameters>
+Fit_parameters fit_parameters(const NamedParameters& np, const char* caller,
+                              Neighborhoods neighborhoods = Neighborhoods::rings)
+{
+  if (neighborhoods == Neighborhoods::rings)
     reject_ball_radius<NamedParameters>(caller);
+  else if (neighborhoods == Neighborhoods::rings_or_ball)
+    reject_scale_selection<NamedParameters>(caller);
   Fit_settings settings;
   settings.rings = parameter_or(np, internal_np::neighborhood_rings, 1);
   settings.boundary_rings = parameter_or(np, internal_np::boundary_neighborhood_rings, settings.rings);
@@ -63,6 +76,7 @@ Fit_parameters fit_parameters(const NamedParameters& np, const char* caller, boo
   if (!(settings.max_condition > 1))
     throw std::invalid_argument(where + "max_condition_number must be greater than 1");
   settings.ball_radius = ball_radius_or_zero(np, caller);
+  settings.radius_range = ball_radius_range_or_none(np, caller);
   return {settings, parameter_or(np, internal_np::vertex_normal_method, Vertex_normal_method::quadric_fit)};
 }
 
@@ -71,9 +85,9 @@ Fit_parameters fit_parameters(const NamedParameters& np, const char* caller, boo
 // std::invalid_argument where it is out of that range.
 template <typename NamedParameters>
 Fit_parameters curvature_fit_parameters(const NamedParameters& np, const char* caller, int max_degree,
-                                        bool with_ball_radius)
+                                        Neighborhoods neighborhoods)
 {
-  Fit_parameters fit = fit_parameters(np, caller, with_ball_radius);
+  Fit_parameters fit = fit_parameters(np, caller, neighborhoods);
   const std::string where = std::string(caller) + ": ";
   fit.settings.degree = parameter_or(np, internal_np::fit_degree, 2);
   if (fit.settings.degree < 2 || fit.settings.degree > max_degree)

@@ -33,6 +33,12 @@ struct Surface_estimate
   Eigen::Vector3d max_direction = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
   Eigen::Vector3d min_direction = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
   Eigen::Vector3d normal = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  // Under scale selection (scale_selection.h): the radius of the estimate's
+  // neighborhood and the noise estimated there.
+  double radius = std::numeric_limits<double>::quiet_NaN();
+  double noise = std::numeric_limits<double>::quiet_NaN();
+
+  double mean_curvature() const { return 0.5 * (max_curvature + min_curvature); }
 
   static Surface_estimate from_principal(Estimation_status status, double max_curvature, double min_curvature,
                                          const Eigen::Vector3d& max_direction, const Eigen::Vector3d& min_direction,
@@ -64,7 +70,9 @@ constexpr bool wants_curvature_output()
   return has_parameter<NamedParameters, internal_np::vertex_principal_curvatures_and_directions_map_t>() ||
          has_parameter<NamedParameters, internal_np::vertex_mean_curvature_map_t>() ||
          has_parameter<NamedParameters, internal_np::vertex_Gaussian_curvature_map_t>() ||
-         has_parameter<NamedParameters, internal_np::vertex_estimation_status_map_t>();
+         has_parameter<NamedParameters, internal_np::vertex_estimation_status_map_t>() ||
+         has_parameter<NamedParameters, internal_np::vertex_ball_radius_map_t>() ||
+         has_parameter<NamedParameters, internal_np::vertex_noise_map_t>();
 }
 
 // Whether the map that `np` (of type NP) holds under `tag`, if it holds one, may
@@ -86,7 +94,9 @@ constexpr bool surface_outputs_accessible_concurrently()
   return given_map_accessible_concurrently<NP>(internal_np::vertex_principal_curvatures_and_directions_map) &&
          given_map_accessible_concurrently<NP>(internal_np::vertex_mean_curvature_map) &&
          given_map_accessible_concurrently<NP>(internal_np::vertex_Gaussian_curvature_map) &&
-         given_map_accessible_concurrently<NP>(internal_np::vertex_estimation_status_map);
+         given_map_accessible_concurrently<NP>(internal_np::vertex_estimation_status_map) &&
+         given_map_accessible_concurrently<NP>(internal_np::vertex_ball_radius_map) &&
+         given_map_accessible_concurrently<NP>(internal_np::vertex_noise_map);
 }
 
 // Writes the outputs that `np` asks for, and only those; `v` by reference for the
@@ -104,11 +114,15 @@ void put_surface_estimate(const NamedParameters& np, VertexDescriptor&& v, const
                                               Vector_3(e.min_direction.x(), e.min_direction.y(), e.min_direction.z()),
                                               Vector_3(e.max_direction.x(), e.max_direction.y(), e.max_direction.z())));
   if constexpr (has_parameter<NamedParameters, internal_np::vertex_mean_curvature_map_t>())
-    put(get_parameter(np, internal_np::vertex_mean_curvature_map), v, FT(0.5 * (e.max_curvature + e.min_curvature)));
+    put(get_parameter(np, internal_np::vertex_mean_curvature_map), v, FT(e.mean_curvature()));
   if constexpr (has_parameter<NamedParameters, internal_np::vertex_Gaussian_curvature_map_t>())
     put(get_parameter(np, internal_np::vertex_Gaussian_curvature_map), v, FT(e.gaussian_curvature));
   if constexpr (has_parameter<NamedParameters, internal_np::vertex_estimation_status_map_t>())
     put(get_parameter(np, internal_np::vertex_estimation_status_map), v, e.status);
+  if constexpr (has_parameter<NamedParameters, internal_np::vertex_ball_radius_map_t>())
+    put(get_parameter(np, internal_np::vertex_ball_radius_map), v, FT(e.radius));
+  if constexpr (has_parameter<NamedParameters, internal_np::vertex_noise_map_t>())
+    put(get_parameter(np, internal_np::vertex_noise_map), v, FT(e.noise));
   (void)np;
   (void)v;
   (void)e;

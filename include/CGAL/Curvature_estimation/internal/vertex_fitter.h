@@ -65,9 +65,11 @@ public:
   // length): Hamann's paraboloid at fit_degree 2 over rings.
   Vertex_fit<Estimate> fit(Vertex v, const Vector& normal)
   {
+    if (settings_.in_ball())
+      return ball_fit(v, &normal, Vertex_normal_method::quadric_fit, settings_.ball_radius);
     Vertex_fit<Estimate> result;
     const double length = normal.norm();
-    if (!(length > 0) || !std::isfinite(length) || !samples_.gather(v, settings_.ball_radius))
+    if (!(length > 0) || !std::isfinite(length) || !samples_.gather(v, 0))
       return finished(result);
     const Vector unit = normal / length;
     if (settings_.fits_intercept())
@@ -84,8 +86,10 @@ public:
   // a ball, in the frame of the first-order normal.
   Vertex_fit<Estimate> fit(Vertex v, Vertex_normal_method method)
   {
+    if (settings_.in_ball())
+      return ball_fit(v, nullptr, method, settings_.ball_radius);
     Vertex_fit<Estimate> result;
-    if (!samples_.gather(v, settings_.ball_radius))
+    if (!samples_.gather(v, 0))
       return finished(result);
     if (settings_.degree == 2 && !settings_.fits_intercept())
       result.estimate = degree_two_curvature(v, method, result);
@@ -95,6 +99,18 @@ public:
         result.estimate = settings_.fits_intercept() ? intercept_fit(normal) : degree_fit(normal, true, result);
     }
     return finished(result);
+  }
+
+  // The fit of the settings' degree over the ball of `radius` (in the mesh's
+  // units, grown as with ball_radius) in the frame of `normal` (any length) where
+  // given, else of the first-order normal by `method`.
+  Vertex_fit<Estimate> ball_fit(Vertex v, const Vector* normal, Vertex_normal_method method, double radius)
+  {
+    Vertex_fit<Estimate> result;
+    Vector unit;
+    if (samples_.gather(v, radius) && samples_.unit_normal(v, normal, method, unit))
+      result.estimate = intercept_fit(unit);
+    return finished(result, true);
   }
 
   // At fit_degree 2 over rings what fit(v, *normal), or fit(v, method) where
@@ -182,10 +198,10 @@ private:
 
   int start_rings() const { return settings_.start_rings(samples_.on_border()); }
 
-  Vertex_fit<Estimate>& finished(Vertex_fit<Estimate>& result) const
+  Vertex_fit<Estimate>& finished(Vertex_fit<Estimate>& result, bool in_ball = false) const
   {
     result.on_border = samples_.on_border();
-    result.neighbors = samples_.neighbors(settings_.in_ball());
+    result.neighbors = samples_.neighbors(in_ball);
     return result;
   }
 
