@@ -6,9 +6,21 @@
 
 #include <CGAL/Curvature_estimation/internal/surface_estimate.h>
 
+#include <cstddef>
+
 namespace CGAL {
 namespace Curvature_estimation {
 namespace internal {
+
+// What a fit at one vertex found, for the links of a chain.
+template <typename Estimate>
+struct Vertex_fit
+{
+  Estimate estimate;         // not_estimable where no fit was accepted
+  std::size_t neighbors = 0; // the neighbors gathered, on every ring reached or in the ball
+  bool whitened = false;     // whether the whitened test accepted the fit or its normal's
+  bool on_border = false;
+};
 
 // What a link of a chain found at a vertex: an estimate (accepted), an estimate
 // that a later link may replace (provisional), none (refused), or none and none
