@@ -78,11 +78,9 @@ public:
       , paraboloid_(g, vpm, Fit_parameters{Fit_settings(), Vertex_normal_method::quadric_fit})
   {}
 
-  // The fallback chain: the curve network; where it has fewer than three curves,
-  // a curve that is no mesh line, no normal or an ill-conditioned Euler system,
-  // the paraboloid fit with its defaults (and its own fallbacks), with the same
-  // normal if one was given. `given_normal` is the user's normal (any length),
-  // or null for the default (the normal of the curves' tangents).
+  // The fallback chain: the curve network; where it has too few curves, no normal or an
+  // ill-conditioned Euler system, the paraboloid fit with its defaults and the same given
+  // normal. `given_normal`: the user's (any length), or null (the curves' tangents' normal).
   Surface_estimate estimate(vertex_descriptor v, const Eigen::Vector3d* given_normal)
   {
     Eigen::Vector3d given = Eigen::Vector3d::Zero();
@@ -226,10 +224,9 @@ private:
     return true;
   }
 
-  // The points of the line through ring_[before] - v - ring_[after], continued
-  // up to order_ - 1 more steps each way (scaled, relative to v); `available` is
-  // the order used: the fewest steps either way. Stops at a boundary, at a vertex
-  // of other valence, at a non-finite point, and if the line closes on itself.
+  // The points of the line through ring_[before] - v - ring_[after], continued up to order_ - 1
+  // steps each way (scaled, relative to v); `available`: the fewest steps either way. Stops at a
+  // boundary, a vertex of other valence, a non-finite point, or where the line closes.
   Curve_estimate line_curve(vertex_descriptor v, std::size_t before, std::size_t after, int& available)
   {
     int counts[2] = {0, 0};

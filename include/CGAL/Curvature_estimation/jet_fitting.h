@@ -73,12 +73,8 @@ public:
   // CGAL's fit normal.
   static constexpr bool uses_given_normals = false;
 
-  // The fallback chain: CGAL's fit; where it is ill-conditioned on every
-  // neighborhood, the paraboloid fit with its defaults and its own fallbacks,
-  // whose conditioning test accepts anisotropic neighborhoods. Under scale
-  // selection, that estimate or CGAL's fit over the selected ball
-  // (select_estimate, the selection by this package's fits of the jet's degree in
-  // the frame of the area-weighted normal).
+  // The fallback chain: CGAL's fit, else the paraboloid fit with its defaults and fallbacks.
+  // Under scale selection, that or CGAL's fit over the ball selected by this package's fits.
   Surface_estimate estimate(vertex_descriptor v, const Eigen::Vector3d*)
   {
     const Surface_estimate estimate = estimate_with_fallbacks<Surface_estimate>(
@@ -91,10 +87,9 @@ public:
   }
 
 private:
-  // The fit over the rings (the vertex first, as CGAL requires), widened until
-  // there are enough points for the jet's coefficients (a precondition CGAL
-  // checks only in debug builds) and CGAL's condition number is at most
-  // `max_condition_`, or over the ball of `ball_radius` where positive.
+  // The fit over the rings (the vertex first, as CGAL requires), widened until they hold the
+  // jet's coefficients (CGAL checks that only in debug builds) and CGAL's condition number is
+  // at most `max_condition_`; or over the ball of `ball_radius` where positive.
   Surface_estimate fit(vertex_descriptor v, double ball_radius)
   {
     const Eigen::Vector3d center = point_in_double(vpm_, v);
@@ -161,9 +156,8 @@ private:
     if (!(fitting.condition_number() <= max_condition_))
       return false;
     form.comply_wrt_given_normal(Local_kernel::Vector_3(orientation.x(), orientation.y(), orientation.z()));
-    // CGAL's curvature is positive where the surface bends towards its
-    // normal: with the outward normal a convex surface has k < 0. This
-    // package's convention is the opposite, so max and min swap.
+    // CGAL's curvature is positive where the surface bends towards its normal (convex with
+    // outward normals: k < 0); ours is the opposite, so max and min swap.
     const auto to_eigen = [](const Local_kernel::Vector_3& d) { return Eigen::Vector3d(d.x(), d.y(), d.z()); };
     e =
       Surface_estimate::from_principal(Estimation_status::ok, -form.principal_curvatures(1),

@@ -191,9 +191,8 @@ Normal_orientation oriented_rings(const Point_set_search& search, std::size_t ne
 /// min_curvature == 1/r`. A point that cannot be estimated (non-finite, fewer neighbors than the fit
 /// has unknowns, neighbors on a line) gets NaN in every output. Only the outputs passed are written.
 ///
-/// Statuses: `ok`, the fit over the starting neighborhood; `widened`, over 2k or 4k neighbors (or a
-/// grown ball); `fallback`, at degrees 3 and 4 the fit of degree 2 where no neighborhood conditions
-/// the fit of `fit_degree` (not with `use_fallbacks(false)`); `not_estimable`, NaN in every output.
+/// Statuses: `widened` over 2k or 4k neighbors (or a grown ball); `fallback` at degrees 3 and 4, the
+/// fit of degree 2 where no neighborhood conditions that of `fit_degree`; `not_estimable`, NaN.
 ///
 /// \ceConcurrencyTag
 /// \tparam PointRange a model of `Range` (`CGAL::Point_set_3` or any range with a `point_map`); the
@@ -206,15 +205,13 @@ Normal_orientation oriented_rings(const Point_set_search& search, std::size_t ne
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{point_map}
 ///     \cgalParamDescription{the points of the range's elements}
-///     \cgalParamType{a model of `ReadablePropertyMap` with the range's value type as key type and `GT::Point_3` as
-///       value type}
+///     \cgalParamType{a `ReadablePropertyMap` from the range's value type to `GT::Point_3`}
 ///     \cgalParamDefault{`CGAL::Identity_property_map`, or the point map of a `Point_set_3`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{normal_map}
 ///     \cgalParamDescription{given normals (read, not written; they need not be unit), which set the fit's plane
 ///       and orient the result}
-///     \cgalParamType{a model of `ReadablePropertyMap` with the range's value type as key type and `GT::Vector_3`
-///       as value type}
+///     \cgalParamType{a `ReadablePropertyMap` from the range's value type to `GT::Vector_3`}
 ///     \cgalParamDefault{none: normals fitted and oriented by the propagation; for a `Point_set_3`, its normal map
 ///       if it has one}
 ///   \cgalParamNEnd
@@ -265,22 +262,19 @@ Normal_orientation oriented_rings(const Point_set_search& search, std::size_t ne
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{estimated_normal_map}
 ///     \cgalParamDescription{output: the unit normal of the fitted graph, oriented as the result}
-///     \cgalParamType{a model of `WritablePropertyMap` with the range's value type as key type and `GT::Vector_3` as
-///       value type}
+///     \cgalParamType{a `WritablePropertyMap` from the range's value type to `GT::Vector_3`}
 ///     \cgalParamDefault{not computed}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{orientation_component_map}
 ///     \cgalParamDescription{output: the connected part of the neighbor graph a point was oriented with, numbered
 ///       from 0; `std::size_t(-1)` where not oriented (given normals, unsigned curvatures, no normal)}
-///     \cgalParamType{a model of `WritablePropertyMap` with the range's value type as key type and `std::size_t` as
-///       value type}
+///     \cgalParamType{a `WritablePropertyMap` from the range's value type to `std::size_t`}
 ///     \cgalParamDefault{not computed}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{orientation_confidence_map}
 ///     \cgalParamDescription{output: how surely the orientation holds, in [0, 1] (the weakest agreement of normals
 ///       on the point's path of the propagation, and how one-sided its part is); 0 where not oriented}
-///     \cgalParamType{a model of `WritablePropertyMap` with the range's value type as key type and `double` as value
-///       type}
+///     \cgalParamType{a `WritablePropertyMap` from the range's value type to `double`}
 ///     \cgalParamDefault{not computed}
 ///   \cgalParamNEnd
 ///   \ceSurfaceOutputParameters{K = k1 k2, `ok`\, `widened`\, `fallback` or `not_estimable`}

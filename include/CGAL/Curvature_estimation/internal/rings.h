@@ -34,19 +34,16 @@ void for_each_listed_neighbor(const Offsets& offsets, const Neighbors& neighbors
     visit(neighbors[k]);
 }
 
-// The neighbors of every vertex of a FaceGraph whose vertex descriptors are
-// indices (Surface_mesh), in the order of the halfedges around it, as 32-bit
-// indices in compressed rows: the rings beyond the first read them instead of
-// circulating the halfedges, a chain of dependent loads.
+// The neighbors of every vertex of a FaceGraph with index descriptors (Surface_mesh), in
+// halfedge order, as 32-bit indices in compressed rows: cheaper than circulating halfedges.
 struct Vertex_adjacency
 {
   std::vector<std::uint32_t> offsets; // per vertex index, and one more
   std::vector<std::uint32_t> neighbors;
 };
 
-// The adjacency of `g`, or null where its vertex descriptors are not indices,
-// do not fit in 32 bits or are not listed in ascending order by vertices(g)
-// (they are in Surface_mesh).
+// The adjacency of `g`, or null where its vertex descriptors are not indices that fit in 32
+// bits, listed in ascending order by vertices(g) (as in Surface_mesh).
 template <typename FaceGraph>
 std::shared_ptr<const Vertex_adjacency> vertex_adjacency(const FaceGraph& g)
 {
@@ -95,9 +92,8 @@ public:
   using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<FaceGraph>::halfedge_descriptor;
 
-  // The rings beyond the first (and the balls) from `adjacency`, that of the
-  // graph passed to the calls below (vertex_adjacency), shared by the copies of
-  // this collector; null: by halfedge circulation.
+  // The rings beyond the first (and the balls) from `adjacency` (vertex_adjacency of the graph
+  // passed below, shared by the copies); null: by halfedge circulation.
   void use_adjacency(std::shared_ptr<const Vertex_adjacency> adjacency) { adjacency_ = std::move(adjacency); }
 
   // Restarts at `center` with its 1-ring.

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The choice of a ball radius at one vertex from the fits over nested balls
-// about it (the manual's "Scale selection"): the radius of least estimated mean
-// squared error of the mean curvature, and whether the estimate over that ball
-// or the default one is kept.
+// The choice of a ball radius at one vertex from the fits over nested balls about
+// it (the manual's "Choosing the radius per vertex").
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_SCALE_SELECTION_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_SCALE_SELECTION_H
 
@@ -17,22 +15,17 @@ namespace CGAL {
 namespace Curvature_estimation {
 namespace internal {
 
-// The fit over one ball of the nested balls: the index of its radius among the
-// candidate radii, that radius in units of the vertex's scale, the mean curvature
-// the fit gives, that mean curvature's variance per unit variance of the heights,
-// and the variance of the heights about the fit.
+// The fit over one ball of the nested balls.
 struct Scale_candidate
 {
-  std::size_t step;
-  double radius;
-  double mean_curvature;
-  double variance;
-  double residual_variance;
+  std::size_t step;         // the index of its radius among the candidate radii
+  double radius;            // in units of the vertex's scale
+  double mean_curvature;    // of the fit
+  double variance;          // of that mean curvature, per unit variance of the heights
+  double residual_variance; // of the heights about the fit
 };
 
-// The order of the leading bias of the mean curvature of a fit of `degree` over
-// a ball of radius r: r^2 at degrees 2 and 3, r^4 at degree 4 (the odd orders
-// cancel in a ball centered at the vertex).
+// The order of the leading bias of the mean curvature of a fit of `degree` over a ball.
 constexpr int bias_order(int degree) { return degree == 4 ? 4 : 2; }
 
 // The candidate of least estimated mean squared error, its index and that error.
@@ -65,10 +58,8 @@ inline double bias_slope(const Scale_candidate* candidates, std::size_t count, i
   return spread > 0 ? covariance / spread : 0;
 }
 
-// Over candidates[0, count) (count > 0): the least estimated mean squared error
-// (beta r^order)^2 + noise_variance variance of the mean curvature. The bias
-// slope beta is fitted over every candidate, then again over those of radius at
-// most twice the one of least error, where the bias is closest to its leading term.
+// Over candidates[0, count) (count > 0): the least (beta r^order)^2 + noise_variance
+// variance, beta fitted over every candidate, then over those up to twice its radius.
 inline Least_error least_error_candidate(const Scale_candidate* candidates, std::size_t count, double noise_variance,
                                          int order)
 {
@@ -89,11 +80,9 @@ inline Least_error least_error_candidate(const Scale_candidate* candidates, std:
   return least_with(bias_slope(candidates, window >= 2 ? window : (std::min)(count, std::size_t(3)), order));
 }
 
-// The number of leading candidates that the selection may consider: none where
-// the residual variance over the smallest ball exceeds clean_ratio times the
-// noise variance (the fit's own misfit dominates the noise: clean data, which the
-// default fit serves), else those before the first whose residual variance exceeds
-// misfit_ratio times the noise variance (the ball has outgrown the fit's model).
+// The number of leading candidates the selection may consider: none where the smallest
+// ball's residual variance exceeds clean_ratio times the noise variance (clean data),
+// else those before the first whose residual variance exceeds misfit_ratio times it.
 inline std::size_t considered_candidates(const Scale_candidate* candidates, std::size_t count, double noise_variance)
 {
   constexpr double clean_ratio = 10, misfit_ratio = 100;
@@ -105,29 +94,21 @@ inline std::size_t considered_candidates(const Scale_candidate* candidates, std:
   return k;
 }
 
-// The selection at one vertex, in the mesh's units: the selected radius (NaN
-// where no ball held enough samples) and the estimated root mean squared error of
-// the mean curvature there, the noise (the standard deviation of the heights
-// about the quartic fit, NaN where too few samples), the standard deviation that
-// this noise gives the mean curvature of the default fit, and the radius of the
-// default fit's neighborhood.
+// The selection at one vertex, in the mesh's units; NaN where not determined.
 struct Scale_selection
 {
   static constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-  double radius = nan;
-  double error = nan;
-  double noise = nan;
-  double default_deviation = nan;
-  double default_radius = nan;
+  double radius = nan;            // the selected radius
+  double error = nan;             // the estimated RMS error of the mean curvature there
+  double noise = nan;             // the heights' standard deviation about the quartic fit
+  double default_deviation = nan; // the standard deviation it gives the default fit's mean curvature
+  double default_radius = nan;    // the radius of the default fit's neighborhood
 
   bool selected() const { return std::isfinite(radius) && std::isfinite(error); }
 };
 
-// The estimate under scale selection: the default estimate where the noise alone
-// would give it a smaller error than the estimated error over the selected ball
-// (on clean data), or where no radius was selected; else the estimate over that
-// ball, `at_radius(radius)`, unless it is not estimable. With the radius of the
-// estimate kept and the noise. Estimate is a Surface_estimate.
+// The default estimate where its noise deviation is at most the selected ball's error
+// or nothing was selected, else `at_radius(radius)` where estimable; with radius and noise.
 template <typename Estimate, typename AtRadius>
 Estimate select_estimate(Estimate default_estimate, const Scale_selection& selection, const AtRadius& at_radius)
 {

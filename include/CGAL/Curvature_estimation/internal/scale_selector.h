@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The scale selection at one vertex (scale_selection.h): the fits of the
-// settings' degree over nested balls about it, grown once from the smallest
-// radius of the range to the largest, the noise from the residuals of a quartic
-// fit over the first of them, and the variance of the 1-ring fit.
+// The scale selection at one vertex (scale_selection.h): the fits over nested balls
+// grown once through the range, the noise from a quartic fit's residuals.
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_SCALE_SELECTOR_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_SCALE_SELECTOR_H
 
@@ -101,10 +99,8 @@ private:
   using Noise_fit = Intercept_fit<D, 4>;
   static constexpr double unbounded = std::numeric_limits<double>::infinity();
 
-  // The candidates_ of the balls of radii_ (in units of the scale), a fit of each
-  // that holds twice the fit's unknowns; returns the noise variance: the residual
-  // variance of the quartic fit over the first ball that holds three times its
-  // unknowns (or the widest, if it holds twice), NaN where there is none.
+  // Fills candidates_ (balls with twice the fit's unknowns); returns the residual variance
+  // of the quartic fit over the first ball with three times its unknowns, NaN where none.
   template <typename Fit>
   double fit_nested_balls(Fit& fit, const Frame& frame)
   {
@@ -160,9 +156,8 @@ private:
       return graph_mean_curvature<D>(fit.hessian(), fit.gradient());
   }
 
-  // The variance of the mean curvature of the 1-ring fit with the gradient, per
-  // unit variance of the heights, the vertex's own height's included (every
-  // sample's height is taken from it); infinite where the fit is not determined.
+  // The 1-ring fit's mean curvature variance per unit height variance, the vertex's own
+  // height's included; infinite where the fit is not determined.
   double one_ring_variance(const Frame& frame) const
   {
     using Fit = Gradient_fit<D, 2>;
