@@ -158,7 +158,9 @@ inline std::vector<Estimator> our_variants()
 
 inline Estimator peer(const std::string& name, const std::string& label, Peer p, double ball_edges = 0)
 {
-  Estimator e{name, label};
+  Estimator e;
+  e.name = name;
+  e.label = label;
   e.peer = p;
   return ball_edges > 0 ? timed_once(in_ball(e, ball_edges)) : e; // balls: seconds on the 1M grid
 }
