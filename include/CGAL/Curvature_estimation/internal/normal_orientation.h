@@ -70,9 +70,10 @@ Normal_orientation orient_normals(const std::vector<Eigen::Vector3d>& points, st
         normals[i] = -normals[i];
       part[i] = parts;
       confidence[i] = (std::min)(agreement, i == from ? 1.f : confidence[from]);
-      neighbors(i, [&](std::uint32_t j) {
+      const auto reached = i; // C++17 lambdas cannot capture structured bindings
+      neighbors(reached, [&](std::uint32_t j) {
         if (part[j] == Normal_orientation::no_part && has_normal(j))
-          front.emplace(normal_agreement(points[i], normals[i], points[j], normals[j]), j, i);
+          front.emplace(normal_agreement(points[reached], normals[reached], points[j], normals[j]), j, reached);
       });
     }
     ++parts;
