@@ -159,9 +159,16 @@ private:
     double* target = Heights ? height_sums_ + m : moments_ + m;
     if constexpr (m >= paired) {
       // factor x0^a is the first entry of lead[W - a] (the second of lead[W - 1] for a = 0).
-      constexpr int row = a > 0 ? W - a : W - 1; // both indices in range: clang checks the branch not taken
-      const double lead_power = lead[row][a > 0 ? 0 : 1];
-      const double y_power = ys[b < V ? b : V - 1][b < V ? 0 : 1];
+      // (if constexpr: clang checks the indices of a branch not taken)
+      double lead_power, y_power;
+      if constexpr (a > 0)
+        lead_power = lead[W - a][0];
+      else
+        lead_power = lead[W - 1][1];
+      if constexpr (b < V)
+        y_power = ys[b][0];
+      else
+        y_power = ys[V - 1][1];
       *target += lead_power * y_power;
     } else if constexpr (m % 2 == 0)
       pair_at(target) += lead[W - a] * ys[b];
