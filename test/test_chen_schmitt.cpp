@@ -26,11 +26,11 @@ TEST(Chen_schmitt, ExactOnASphereWithExactNormals)
   // Every neighbor of a sphere's vertex lies on the circle of radius r tangent
   // to the plane: k_n(t_i) = 1/r exactly. Euler's formula then fits C1 = C3 = 1/r,
   // C2 = 0 exactly.
-  const double radius = 0.5;
-  const ce_test::Soup soup = ce_test::sphere_soup(radius, 3);
-  Mesh mesh = ce_test::to_mesh<Mesh>(soup);
-  const auto exact = ce_test::sphere_curvatures(radius, soup);
-  const auto normals = exact_normal_map(mesh, exact);
+  Sphere_with_exact_normals sphere;
+  const double radius = sphere.radius;
+  const Mesh& mesh = sphere.mesh;
+  const auto& exact = sphere.exact;
+  const auto normals = sphere.normals;
   const Estimates cs = estimate(chen_schmitt, mesh, params::vertex_normal_map(normals));
   for (std::size_t i = 0; i < exact.size(); ++i) {
     EXPECT_NEAR(cs.principal[i].max_curvature, 1 / radius, 1e-12 / radius);

@@ -25,11 +25,11 @@ TEST(Taubin, MeanCurvatureIsExactOnASphereWithExactNormals)
   // to the plane: k_n(t_i) = 1/r exactly. Taubin's tensor is (1/r) sum w_i t_i t_i^T,
   // of trace 1/r: its H = (k1 + k2)/2 = tr M is exact, its k1, k2 only on
   // isotropic stencils.
-  const double radius = 0.5;
-  const ce_test::Soup soup = ce_test::sphere_soup(radius, 3);
-  Mesh mesh = ce_test::to_mesh<Mesh>(soup);
-  const auto exact = ce_test::sphere_curvatures(radius, soup);
-  const auto normals = exact_normal_map(mesh, exact);
+  Sphere_with_exact_normals sphere;
+  const double radius = sphere.radius;
+  const Mesh& mesh = sphere.mesh;
+  const auto& exact = sphere.exact;
+  const auto normals = sphere.normals;
   for (Neighbor_weighting w : {Neighbor_weighting::area, Neighbor_weighting::centroid}) {
     const Estimates e = estimate(taubin, mesh, params::vertex_normal_map(normals).neighbor_weighting(w));
     for (std::size_t i = 0; i < exact.size(); ++i)

@@ -70,6 +70,17 @@ inline Normal_map exact_normal_map(Mesh& mesh, const std::vector<Exact_curvature
   return ce_test::exact_normal_map<Kernel>(mesh, exact);
 }
 
+// A sphere of radius 0.5 (sphere_soup, 3 subdivisions), its exact curvatures and its exact
+// normals as a vertex_normal_map.
+struct Sphere_with_exact_normals
+{
+  double radius = 0.5;
+  Soup soup = sphere_soup(radius, 3);
+  Mesh mesh = to_mesh<Mesh>(soup);
+  std::vector<Exact_curvature> exact = sphere_curvatures(radius, soup);
+  Normal_map normals = exact_normal_map(mesh, exact);
+};
+
 inline void expect_unit_orthogonal_tangent(const Curvatures& c, const Eigen::Vector3d& normal, double tangent_tolerance)
 {
   const Eigen::Vector3d d_max(c.max_direction.x(), c.max_direction.y(), c.max_direction.z());
