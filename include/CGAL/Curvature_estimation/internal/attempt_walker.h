@@ -70,15 +70,31 @@ protected:
     const Frame normal_frame = Samples::frame_of(normal);
     for (const Fit_attempt& attempt : attempts) {
       Acceptance accepted;
-      with_fit<D>(kinds, attempt.fit, [&](auto& fit) { accepted = try_attempt(attempt, normal_frame, fit, use); });
+      with_fit<D>(kinds, attempt.fit, [&](auto& fit) {
+        using Fit = std::remove_reference_t<decltype(fit)>;
+        const Fit_use<Fit> erased{&use, [](const void* u, Fit& f, const Sampling& s, int reach) {
+                                    return (*static_cast<const Use*>(u))(f, s, reach);
+                                  }};
+        accepted = try_attempt(attempt, normal_frame, fit, erased);
+      });
       if (accepted)
         return accepted;
     }
     return {};
   }
 
-  template <typename Fit, typename Use>
-  Acceptance try_attempt(const Fit_attempt& attempt, const Frame& normal_frame, Fit& fit, const Use& use)
+  // A `use` of walk without its type: one try_attempt per fit, whatever the
+  // caller (each copy of its loops and solves costs instruction cache).
+  template <typename Fit>
+  struct Fit_use
+  {
+    const void* use;
+    bool (*call)(const void*, Fit&, const Sampling&, int);
+    bool operator()(Fit& fit, const Sampling& sampling, int reach) const { return call(use, fit, sampling, reach); }
+  };
+
+  template <typename Fit>
+  Acceptance try_attempt(const Fit_attempt& attempt, const Frame& normal_frame, Fit& fit, const Fit_use<Fit>& use)
   {
     if (attempt.test == Condition_test::whitened) {
       int widest = 0;

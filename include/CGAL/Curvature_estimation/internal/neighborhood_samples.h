@@ -167,13 +167,13 @@ public:
     return std::sqrt(squared);
   }
 
-  // A q for A = T^T, as Eigen's product sums it; in R^3 in place (Eigen's
-  // assignment is a call per sample there).
+  // A q for A = T^T, as Eigen's product sums it; in R^3 by columns in place (Eigen's
+  // assignment is a call per sample there; two scalar rows stall the packed reads of x).
   static CGAL_CURVATURE_ESTIMATION_INLINE Eigen::Matrix<double, D, 1>
   tangent_coordinates(const Eigen::Matrix<double, D, N>& A, const Vector& q)
   {
     if constexpr (N == 3)
-      return {A(0, 0) * q[0] + A(0, 1) * q[1] + A(0, 2) * q[2], A(1, 0) * q[0] + A(1, 1) * q[1] + A(1, 2) * q[2]};
+      return A.col(0) * q[0] + A.col(1) * q[1] + A.col(2) * q[2];
     else
       return A * q;
   }
