@@ -8,6 +8,7 @@ The estimation runs without the GIL; ``threads`` is as the tool's --threads (0: 
 cores, 1: sequential, N: at most N threads).
 """
 
+import collections
 import enum
 import warnings
 from typing import NamedTuple
@@ -53,17 +54,8 @@ class MeshCurvatures(NamedTuple):
     status: np.ndarray
 
 
-class PointSetCurvatures(NamedTuple):
-    """As MeshCurvatures, and the unit normal of each point's fit, oriented as the result."""
-
-    k_max: np.ndarray
-    k_min: np.ndarray
-    mean: np.ndarray
-    gaussian: np.ndarray
-    d_max: np.ndarray
-    d_min: np.ndarray
-    status: np.ndarray
-    normal: np.ndarray
+PointSetCurvatures = collections.namedtuple("PointSetCurvatures", MeshCurvatures._fields + ("normal",))
+PointSetCurvatures.__doc__ = "As MeshCurvatures, and the unit normal of each point's fit (n, 3), oriented as the result."
 
 
 class TetrahedralCurvatures(NamedTuple):
