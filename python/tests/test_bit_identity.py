@@ -17,7 +17,7 @@ CASES = [
     ("paraboloid", {"fit_degree": 4}, ["--fit-degree", 4]),
     ("paraboloid", {"rings": 2}, ["--rings", 2]),
     ("paraboloid", {"radius": "3x"}, ["--radius", "3x"]),
-    ("paraboloid", {"radius": 0.3, "fit_degree": 3}, ["--radius", "0.3", "--fit-degree", 3]),
+    ("paraboloid", {"radius": 0.05, "fit_degree": 3}, ["--radius", "0.05", "--fit-degree", 3]),
     ("curve-network", {}, []),
     ("curve-network", {"order": 2}, ["--order", 2]),
     ("gauss-map", {}, []),
