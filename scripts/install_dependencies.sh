@@ -23,10 +23,14 @@ PACKAGES=(
   doxygen
   # The fuzz target of the tool's input path (libFuzzer ships with Debian's clang).
   clang
+  # The Python package (python/, setup.py: pybind11, built by setuptools in a virtual
+  # environment of /usr/bin/python3; pkg-config finds Eigen and TBB) and its tests (pytest).
+  python3 python3-dev python3-numpy python3-pybind11 pybind11-dev python3-pytest python3-venv python3-setuptools
+  python3-wheel pkg-config
 )
 if [ "${1:-}" = "--report" ]; then
   # Plots and headless renders of benchmark/REPORT.md (/usr/bin/python3's matplotlib, Agg backend).
-  PACKAGES+=(python3 python3-matplotlib python3-numpy)
+  PACKAGES+=(python3-matplotlib)
   # /usr/bin/time -v: wall time and peak memory of benchmark/tool_end_to_end.sh.
   PACKAGES+=(time)
   # Callgrind: the default's instructions per vertex (benchmark/instructions.sh).

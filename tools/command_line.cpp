@@ -179,6 +179,8 @@ int parse_int(const std::string& option, const std::string& text, int min_value,
   return value;
 }
 
+} // namespace
+
 // R or Rx: a positive finite number, in mean edge lengths with the x.
 Radius parse_radius(const std::string& option, const std::string& text)
 {
@@ -196,7 +198,38 @@ Radius parse_radius(const std::string& option, const std::string& text)
   return {value, in_mean_edges};
 }
 
-} // namespace
+void check_options(const Options& o)
+{
+  for (const Integer_option& option : integer_options)
+    if (o.*(option.value))
+      check_read(o, option.flag, option.setting, option.not_read_hint);
+  if (o.monge_degree && *o.monge_degree > o.degree.value_or(integer_range(Setting::jet_degree).default_value))
+    fail("--monge-degree " + std::to_string(*o.monge_degree) + " exceeds the jet degree " +
+           std::to_string(o.degree.value_or(integer_range(Setting::jet_degree).default_value)) + " (see --degree)",
+         2);
+  if (o.tetrahedral) {
+    if (!o.method->tetrahedral)
+      fail(std::string("method '") + o.method->name + "' does not apply to tetrahedral input (.mesh): use " +
+             join(tetrahedral_methods(), " or "),
+           2);
+    if (o.fit_degree.value_or(2) > 3)
+      fail("--fit-degree 4 is for surfaces: tetrahedral input (.mesh) takes 2 or 3", 2);
+    if (!o.output.empty() && lower_extension(o.output) == ".ply")
+      fail("PLY output is for surfaces: write the curvatures of tetrahedral input (.mesh) as CSV", 2);
+  } else if (!o.scalars.empty()) {
+    fail("--scalars applies to tetrahedral input (.mesh) only", 2);
+  }
+  if (o.radius) {
+    check_read(o, "--radius", Setting::ball_radius, "");
+    if (o.rings)
+      fail("--radius and --rings exclude each other: a neighborhood is a ball or rings", 2);
+  }
+  if (!o.output.empty()) {
+    const std::string ext = lower_extension(o.output);
+    if (ext != ".csv" && ext != ".ply")
+      fail("output '" + o.output + "' must end in .csv or .ply", 2);
+  }
+}
 
 std::optional<Options> parse_arguments(int argc, char** argv)
 {
@@ -257,36 +290,8 @@ std::optional<Options> parse_arguments(int argc, char** argv)
     fail("more than one input file given ('" + positional[0] + "', '" + positional[1] + "')", 2);
   o.input = positional[0];
 
-  for (const Integer_option& option : integer_options)
-    if (o.*(option.value))
-      check_read(o, option.flag, option.setting, option.not_read_hint);
-  if (o.monge_degree && *o.monge_degree > o.degree.value_or(integer_range(Setting::jet_degree).default_value))
-    fail("--monge-degree " + std::to_string(*o.monge_degree) + " exceeds the jet degree " +
-           std::to_string(o.degree.value_or(integer_range(Setting::jet_degree).default_value)) + " (see --degree)",
-         2);
   o.tetrahedral = lower_extension(o.input) == ".mesh";
-  if (o.tetrahedral) {
-    if (!o.method->tetrahedral)
-      fail(std::string("method '") + o.method->name + "' does not apply to tetrahedral input (.mesh): use " +
-             join(tetrahedral_methods(), " or "),
-           2);
-    if (o.fit_degree.value_or(2) > 3)
-      fail("--fit-degree 4 is for surfaces: tetrahedral input (.mesh) takes 2 or 3", 2);
-    if (!o.output.empty() && lower_extension(o.output) == ".ply")
-      fail("PLY output is for surfaces: write the curvatures of tetrahedral input (.mesh) as CSV", 2);
-  } else if (!o.scalars.empty()) {
-    fail("--scalars applies to tetrahedral input (.mesh) only", 2);
-  }
-  if (o.radius) {
-    check_read(o, "--radius", Setting::ball_radius, "");
-    if (o.rings)
-      fail("--radius and --rings exclude each other: a neighborhood is a ball or rings", 2);
-  }
-  if (!o.output.empty()) {
-    const std::string ext = lower_extension(o.output);
-    if (ext != ".csv" && ext != ".ply")
-      fail("output '" + o.output + "' must end in .csv or .ply", 2);
-  }
+  check_options(o);
   return o;
 }
 

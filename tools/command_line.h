@@ -43,6 +43,15 @@ struct Options
   Quantity color_by = Quantity::mean;
 };
 
+// Fails (a Tool_error with code 2) where the options of `o` do not go together: a
+// setting its method does not read, --monge-degree above the jet degree, --radius with
+// --rings, and what tetrahedral input (o.tetrahedral) or the output's extension refuses.
+void check_options(const Options& o);
+
+// --radius `text` (R, or Nx in mean edge lengths) of `option`: a positive finite number
+// (a Tool_error with code 2 otherwise).
+Radius parse_radius(const std::string& option, const std::string& text);
+
 // The options of argv, checked together (a Tool_error with code 2 otherwise);
 // nullopt when help was printed.
 std::optional<Options> parse_arguments(int argc, char** argv);

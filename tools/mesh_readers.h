@@ -18,6 +18,7 @@
 #include <climits>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -347,6 +348,25 @@ inline int ignored_medit_section_width(std::string_view keyword)
 
 } // namespace internal
 
+// Two tetrahedra with the same four vertices (indices from 0, the first before the
+// second), if there are any.
+inline std::optional<std::pair<std::size_t, std::size_t>>
+same_tetrahedra(const std::vector<std::array<std::size_t, 4>>& cells)
+{
+  std::vector<std::pair<std::array<std::size_t, 4>, std::size_t>> sorted;
+  sorted.reserve(cells.size());
+  for (std::size_t t = 0; t < cells.size(); ++t) {
+    std::array<std::size_t, 4> cell = cells[t];
+    std::sort(cell.begin(), cell.end());
+    sorted.emplace_back(cell, t);
+  }
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t i = 1; i < sorted.size(); ++i)
+    if (sorted[i].first == sorted[i - 1].first)
+      return std::pair(sorted[i - 1].second, sorted[i].second);
+  return std::nullopt;
+}
+
 // ASCII Medit .mesh: the preamble, then sections "Keyword count items" in any
 // order: Vertices (x y z ref), Tetrahedra (four indices from 1, ref), others
 // skipped (their items must still be numbers), up to End or the end of the file.
@@ -409,18 +429,9 @@ inline Tetrahedral_mesh_data read_medit_mesh(std::string_view text)
   if (!have_vertices || !have_cells)
     throw Read_error(std::string("no ") + (have_vertices ? "Tetrahedra" : "Vertices") + " section");
 
-  std::vector<std::pair<std::array<std::size_t, 4>, std::size_t>> sorted;
-  sorted.reserve(mesh.cells.size());
-  for (std::size_t t = 0; t < mesh.cells.size(); ++t) {
-    std::array<std::size_t, 4> cell = mesh.cells[t];
-    std::sort(cell.begin(), cell.end());
-    sorted.emplace_back(cell, t);
-  }
-  std::sort(sorted.begin(), sorted.end());
-  for (std::size_t i = 1; i < sorted.size(); ++i)
-    if (sorted[i].first == sorted[i - 1].first)
-      throw Read_error("tetrahedra " + std::to_string(sorted[i - 1].second + 1) + " and " +
-                       std::to_string(sorted[i].second + 1) + " have the same four vertices");
+  if (const auto same = same_tetrahedra(mesh.cells))
+    throw Read_error("tetrahedra " + std::to_string(same->first + 1) + " and " + std::to_string(same->second + 1) +
+                     " have the same four vertices");
   return mesh;
 }
 

@@ -375,8 +375,8 @@ Mesh polygon_mesh(const std::vector<Point>& points, const Polygon_range& polygon
 // CGAL's repair_polygon_soup and orient_polygon_soup, step by step as
 // repair_polygon_soup takes them (CGAL 5.5), each skipped where the soup shows it
 // would change nothing, with file_to_mesh kept by index through the steps that
-// renumber the points; one note on stderr of what changed.
-Mesh repaired_mesh(const Soup& soup, std::vector<V>& file_to_mesh)
+// renumber the points; one note on `notes_out` of what changed.
+Mesh repaired_mesh(const Soup& soup, std::vector<V>& file_to_mesh, std::ostream& notes_out)
 {
   const std::size_t file_points = soup.points.size();
   // Duplicate points merged: numbered by their first occurrence, as CGAL numbers them.
@@ -514,16 +514,16 @@ Mesh repaired_mesh(const Soup& soup, std::vector<V>& file_to_mesh)
     std::string line = "curvature: note: repaired the input:";
     for (std::size_t i = 0; i < notes.size(); ++i)
       line += (i ? ", " : " ") + notes[i];
-    std::cerr << line << '\n';
+    notes_out << line << '\n';
   }
   if (unused > 0)
-    std::cerr << "curvature: note: " << unused << " of the file's vertices are in no face; their rows are 'failed'\n";
+    notes_out << "curvature: note: " << unused << " of the file's vertices are in no face; their rows are 'failed'\n";
   return mesh;
 }
 
 } // namespace
 
-Mesh build_mesh(const Soup& soup, std::vector<V>& file_to_mesh)
+Mesh build_mesh(const Soup& soup, std::vector<V>& file_to_mesh, std::ostream& notes)
 {
   // The direct path: a soup that CGAL's repair and orientation would not change.
   std::size_t distinct = 0;
@@ -540,7 +540,7 @@ Mesh build_mesh(const Soup& soup, std::vector<V>& file_to_mesh)
       }
     }
   }
-  return repaired_mesh(soup, file_to_mesh);
+  return repaired_mesh(soup, file_to_mesh, notes);
 }
 
 } // namespace ce_tool

@@ -9,13 +9,15 @@
 #include "kernel.h"
 #include "surface_input.h"
 
+#include <iostream>
 #include <vector>
 
 namespace ce_tool {
 
 // Builds the mesh from a repaired copy of the soup; file_to_mesh[i] is the mesh
-// vertex of the file's vertex i (null when the vertex is in no usable face).
-Mesh build_mesh(const Soup& soup, std::vector<V>& file_to_mesh);
+// vertex of the file's vertex i (null when the vertex is in no usable face). The notes
+// of what the repair changed go to `notes`, a line each ("curvature: note: ...").
+Mesh build_mesh(const Soup& soup, std::vector<V>& file_to_mesh, std::ostream& notes = std::cerr);
 
 } // namespace ce_tool
 

@@ -38,7 +38,8 @@ Row Surface_estimates::operator[](std::size_t i) const
              maps.status[v]};
 }
 
-Surface_estimates estimate(const Options& o, Mesh& mesh, std::vector<V> file_to_mesh)
+Surface_estimates estimate(const Options& o, Mesh& mesh, std::vector<V> file_to_mesh,
+                           const std::optional<Normal_map>& given_normals)
 {
   Surface_estimates e;
   e.maps = add_outputs(mesh, "v:ce_");
@@ -58,6 +59,7 @@ Surface_estimates estimate(const Options& o, Mesh& mesh, std::vector<V> file_to_
   settings.extrapolation_order = o.order;
   settings.jet_degree = o.degree;
   settings.monge_degree = o.monge_degree;
+  settings.given_normals = given_normals;
   e.seconds = timed_estimate([&] { run(*o.method, mesh, settings, e.maps, o.threads); });
   return e;
 }

@@ -13,9 +13,16 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace ce_tool {
+
+// The tool's name of a status: the library's, except "failed" for not_estimable.
+inline const char* status_name(CE::Estimation_status status)
+{
+  return status == CE::Estimation_status::not_estimable ? "failed" : CE::to_string(status);
+}
 
 struct Row
 {
@@ -46,8 +53,10 @@ struct Surface_estimates
 };
 
 // Runs the method --method picks; its outputs are property maps added to `mesh`.
-// --radius Nx is N times the mean edge length of `mesh`.
-Surface_estimates estimate(const Options& o, Mesh& mesh, std::vector<V> file_to_mesh);
+// --radius Nx is N times the mean edge length of `mesh`. `given_normals` (the Python
+// module's; the tool has none) are the mesh's vertex normals, for the methods that read them.
+Surface_estimates estimate(const Options& o, Mesh& mesh, std::vector<V> file_to_mesh,
+                           const std::optional<Normal_map>& given_normals = std::nullopt);
 
 // Ball_size (estimation_settings.h) of the balls of radius `radius` in `mesh`.
 Ball_size mean_ball_size(const Mesh& mesh, double radius);

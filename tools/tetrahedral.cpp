@@ -96,6 +96,24 @@ struct Graph
 
 } // namespace
 
+std::optional<std::size_t> orient_tetrahedra(Tetrahedral_mesh& mesh)
+{
+  for (std::size_t t = 0; t < mesh.cells.size(); ++t) {
+    auto& c = mesh.cells[t];
+    const auto& p = mesh.points;
+    switch (CGAL::orientation(p[c[0]], p[c[1]], p[c[2]], p[c[3]])) {
+      case CGAL::COPLANAR:
+        return t;
+      case CGAL::NEGATIVE:
+        std::swap(c[2], c[3]);
+        break;
+      default:
+        break;
+    }
+  }
+  return std::nullopt;
+}
+
 Tetrahedral_input read_tetrahedral_input(const std::string& mesh_path, const std::string& scalars)
 {
   const Tetrahedral_mesh_data data =
@@ -105,19 +123,8 @@ Tetrahedral_input read_tetrahedral_input(const std::string& mesh_path, const std
   for (const auto& p : data.points)
     input.mesh.points.emplace_back(p[0], p[1], p[2]);
   input.mesh.cells = data.cells;
-  for (std::size_t t = 0; t < input.mesh.cells.size(); ++t) {
-    auto& c = input.mesh.cells[t];
-    const auto& p = input.mesh.points;
-    switch (CGAL::orientation(p[c[0]], p[c[1]], p[c[2]], p[c[3]])) {
-      case CGAL::COPLANAR:
-        fail("degenerate file '" + mesh_path + "': tetrahedron " + std::to_string(t + 1) + " has zero volume");
-      case CGAL::NEGATIVE:
-        std::swap(c[2], c[3]);
-        break;
-      default:
-        break;
-    }
-  }
+  if (const auto flat = orient_tetrahedra(input.mesh))
+    fail("degenerate file '" + mesh_path + "': tetrahedron " + std::to_string(*flat + 1) + " has zero volume");
   const std::size_t vertices = data.points.size();
   input.scalars = read_strictly(scalars_path(mesh_path, scalars),
                                 [vertices](std::string_view text) { return read_medit_sol(text, vertices); });

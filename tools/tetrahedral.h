@@ -12,6 +12,8 @@
 #include <CGAL/Curvature_estimation/Tetrahedral_complex_traits.h>
 
 #include <array>
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,10 +27,14 @@ struct Tetrahedral_input
   std::vector<double> scalars; // f at the vertices
 };
 
+// Makes each tetrahedron positively oriented, which orients the hypersurface's normal
+// towards increasing f (see hypersurface_paraboloid_fitting_curvatures); returns the
+// index (from 0) of the first tetrahedron of zero volume, where it stops, if there is one.
+std::optional<std::size_t> orient_tetrahedra(Tetrahedral_mesh& mesh);
+
 // The syntax and the combinatorics are the reader's (mesh_readers.h); the geometry
-// is checked here, with CGAL's exact orientation predicate: a flat tetrahedron is an
-// error, and each tetrahedron is made positively oriented, which orients the
-// hypersurface's normal towards increasing f (see hypersurface_paraboloid_fitting_curvatures).
+// is checked here, with CGAL's exact orientation predicate (orient_tetrahedra): a flat
+// tetrahedron is an error.
 // f is read from the .sol `scalars` names, or from the .sol beside the .mesh if it is empty.
 Tetrahedral_input read_tetrahedral_input(const std::string& mesh_path, const std::string& scalars);
 

@@ -28,12 +28,6 @@ char* put_double(char* out, double x)
   return std::to_chars(out, out + double_room, x).ptr;
 }
 
-// The tool's name of a status: the library's, except "failed" for not_estimable.
-const char* status_name(CE::Estimation_status status)
-{
-  return status == CE::Estimation_status::not_estimable ? "failed" : CE::to_string(status);
-}
-
 // The header line, then a row per vertex: its values, then its status. A row is
 // made in a local array and appended once (an append per value and comma: 0.73 s
 // for the CSV of a 1M-vertex grid; 0.65 to 0.69 s so).

@@ -1,0 +1,116 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Curvature of surface meshes, point sets and tetrahedral graphs in R^4, with numpy.
+
+The C++ package CGAL::Curvature_estimation through the parts of its command-line tool
+``curvature``: every function gives the tool's values bit for bit, one row per input
+vertex in input order, as float64 arrays, with a ``status`` per vertex (see Status).
+The estimation runs without the GIL; ``threads`` is as the tool's --threads (0: all
+cores, 1: sequential, N: at most N threads).
+"""
+
+import collections
+import enum
+import warnings
+from typing import NamedTuple
+
+import numpy as np
+
+from . import _core
+
+__all__ = [
+    "METHODS",
+    "MeshCurvatures",
+    "PointSetCurvatures",
+    "RepairWarning",
+    "Status",
+    "TetrahedralCurvatures",
+    "mesh_curvatures",
+    "point_set_curvatures",
+    "tetrahedral_curvatures",
+]
+
+#: The status of a vertex, as the tool's CSV names it (values as in its PLY output).
+Status = enum.IntEnum("Status", sorted(_core.STATUS.items(), key=lambda item: item[1]), module=__name__)
+Status.__doc__ = """ok: estimated from the neighborhood asked for; widened: from a wider one;
+failed: no estimate (NaN values); fallback: by the method's documented fallback."""
+
+#: The methods of mesh_curvatures (the tool's -m), the default first.
+METHODS = tuple(_core.METHODS)
+
+
+class RepairWarning(UserWarning):
+    """The faces had to be repaired (as the tool repairs a file) before they made a mesh."""
+
+
+class MeshCurvatures(NamedTuple):
+    """The tool's CSV columns: arrays of n values, d_max and d_min of shape (n, 3)."""
+
+    k_max: np.ndarray
+    k_min: np.ndarray
+    mean: np.ndarray
+    gaussian: np.ndarray
+    d_max: np.ndarray
+    d_min: np.ndarray
+    status: np.ndarray
+
+
+PointSetCurvatures = collections.namedtuple("PointSetCurvatures", MeshCurvatures._fields + ("normal",))
+PointSetCurvatures.__doc__ = "As MeshCurvatures, and the unit normal of each point's fit (n, 3), oriented as the result."
+
+
+class TetrahedralCurvatures(NamedTuple):
+    """The tool's CSV columns of tetrahedral input: k_1 >= k_2 >= k_3, their mean and product."""
+
+    k_1: np.ndarray
+    k_2: np.ndarray
+    k_3: np.ndarray
+    mean: np.ndarray
+    gaussian: np.ndarray
+    status: np.ndarray
+
+
+def mesh_curvatures(vertices, faces, method="paraboloid", *, rings=None, radius=None, order=None,
+                    fit_degree=None, degree=None, monge_degree=None, normals=None, threads=0):
+    """Curvature at the vertices of a surface mesh, as ``curvature -m METHOD -o out.csv``.
+
+    vertices: (n, 3) float64 or float32; faces: (m, k) integers (k >= 3: triangles,
+    quads, ...), indices from 0. method: one of METHODS. rings (--rings), radius
+    (--radius: a length, or a string "Nx" for N mean edge lengths), order (--order),
+    fit_degree (--fit-degree), degree and monge_degree (jet: --degree, --monge-degree):
+    None is the tool's default. normals: (n, 3) vertex normals for the methods that
+    read them (not jet), for a mesh that needs no repair. Faces that do not make a mesh
+    as they are (duplicate points, degenerate faces, inconsistent orientation,
+    non-manifold vertices) are repaired as the tool repairs them, with a RepairWarning
+    saying what changed; a vertex in no face is failed. Bad input raises ValueError.
+    """
+    *values, repairs = _core.mesh_curvatures(vertices, faces, method, rings, radius, order, fit_degree,
+                                             degree, monge_degree, normals, threads)
+    for repair in repairs:
+        warnings.warn(repair, RepairWarning, stacklevel=2)
+    return MeshCurvatures(*values)
+
+
+def point_set_curvatures(points, *, number_of_neighbors=None, neighbor_radius=None, fit_degree=2,
+                         normals=None, unsigned=False, threads=0):
+    """Curvature at the points of a point set (the library's point_set_curvatures).
+
+    points: (n, 3) float64 or float32. The fit of fit_degree (2 to 4) over the
+    number_of_neighbors nearest points (default 16, 32, 64 by degree) or the points
+    within neighbor_radius; normals (n, 3), if given, orient the result, else the fitted
+    normals are oriented consistently, or each point takes H >= 0 with unsigned=True.
+    """
+    return PointSetCurvatures(*_core.point_set_curvatures(points, number_of_neighbors, neighbor_radius,
+                                                          fit_degree, normals, unsigned, threads))
+
+
+def tetrahedral_curvatures(vertices, tetrahedra, scalars, *, rings=None, radius=None, fit_degree=None,
+                           threads=0):
+    """Curvature of the graph (x, y, z, f) in R^4 over a tetrahedral mesh, as the tool on a .mesh and its .sol.
+
+    vertices: (n, 3) float64 or float32; tetrahedra: (m, 4) integers from 0; scalars:
+    f, n values. Tetrahedra are oriented so that the normal points towards increasing
+    f (a convex f has negative curvatures). rings, radius ("Nx": N mean edge lengths in
+    R^4) and fit_degree (2 or 3) as the tool's options. A vertex in no tetrahedron is failed.
+    """
+    return TetrahedralCurvatures(*_core.tetrahedral_curvatures(vertices, tetrahedra, scalars, rings, radius,
+                                                               fit_degree, threads))
