@@ -17,6 +17,7 @@
 
 #include <pybind11/stl.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -55,6 +56,26 @@ std::optional<Radius> radius_of(const py::object& radius)
   return Radius{value, false};
 }
 
+// The tool's option checks name its flags (--fit-degree); a Python caller gives keywords (fit_degree).
+std::string with_keywords(const std::string& message)
+{
+  const auto in_flag = [&](std::size_t i) {
+    return i < message.size() && (std::islower(static_cast<unsigned char>(message[i])) || message[i] == '-');
+  };
+  std::string text;
+  for (std::size_t i = 0; i < message.size();) {
+    if (message.compare(i, 2, "--") == 0 && i + 2 < message.size() &&
+        std::islower(static_cast<unsigned char>(message[i + 2])))
+    {
+      for (i += 2; in_flag(i); ++i)
+        text += message[i] == '-' ? '_' : message[i];
+    } else {
+      text += message[i++];
+    }
+  }
+  return text;
+}
+
 Options options(const Method* method, std::optional<int> rings, const py::object& radius, std::optional<int> order,
                 std::optional<int> fit_degree, std::optional<int> degree, std::optional<int> monge_degree, int threads,
                 bool tetrahedral)
@@ -74,7 +95,11 @@ Options options(const Method* method, std::optional<int> rings, const py::object
   o.monge_degree = monge_degree;
   o.threads = thread_count(threads);
   o.tetrahedral = tetrahedral;
-  check_options(o);
+  try {
+    check_options(o);
+  } catch (const Tool_error& e) {
+    refuse(with_keywords(one_line(e.what())));
+  }
   return o;
 }
 
