@@ -180,3 +180,18 @@ def test_bad_point_sets():
     refuses("points is empty", f, np.zeros((0, 3)))
     refuses("normals must have a row per point \\(50\\), got 3", f, points, normals=points[:3])
 
+
+def test_read_off(tmp_path):
+    """read_off: comments, counts on the header's line, colours after a face; faces of two sizes refused."""
+    path = tmp_path / "mesh.off"
+    path.write_text("OFF 4 2 0 # counts here\n0 0 0\n1 0 0\n# a comment\n0 1 0\n1 1 0.5\n3 0 1 2 255 0 0\n3 1 3 2\n")
+    vertices, faces = ce.read_off(path)
+    np.testing.assert_array_equal(vertices, [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0.5]])
+    np.testing.assert_array_equal(faces, [[0, 1, 2], [1, 3, 2]])
+    assert vertices.dtype == np.float64 and faces.dtype == np.int64
+    path.write_text("OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n4 0 1 3 2\n")
+    refuses("faces of \\[3, 4\\] vertices: mesh_curvatures takes faces of one size", ce.read_off, path)
+    path.write_text("PLY\n")
+    refuses("not an ASCII OFF file", ce.read_off, path)
+    path.write_text("OFF\n4 2 0\n0 0 0\n")
+    refuses("the file ends before its 4 vertices and 2 faces", ce.read_off, path)
