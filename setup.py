@@ -1,9 +1,9 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # The extension curvature_estimation._core: python/src/ and the command-line tool's parts
 # (tools/), compiled as CMake compiles the tool in Release (CMakeLists.txt, tools/CMakeLists.txt),
-# so that the module's values are the tool's bit for bit. Its objects go to build/python/
-# (pip builds in the source tree): a second install with unchanged sources compiles nothing.
-# CE_PYTHON_JOBS: compile jobs (default: all cores).
+# so that the module's values are the tool's bit for bit. Its objects go to build/python/,
+# or CE_PYTHON_BUILD_DIR (relative to the source tree, where pip builds): a second install
+# with unchanged sources compiles nothing. CE_PYTHON_JOBS: compile jobs (default: all cores).
 import os
 import re
 import shutil
@@ -50,7 +50,7 @@ core = Pybind11Extension(
     cxx_std=17,
 )
 
-BUILD_BASE = os.path.join("build", "python")
+BUILD_BASE = os.environ.get("CE_PYTHON_BUILD_DIR") or os.path.join("build", "python")
 os.makedirs(BUILD_BASE, exist_ok=True)  # egg_info's directory must exist
 ParallelCompile("CE_PYTHON_JOBS").install()
 setup(

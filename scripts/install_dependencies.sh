@@ -4,7 +4,6 @@
 # CGAL curvature estimation package. Idempotent: exits at once when every
 # package is already installed.
 #   --report  also the packages that regenerate benchmark/REPORT.md
-#             (matplotlib draws the plots and renders the bunny pictures)
 set -euo pipefail
 
 PACKAGES=(
@@ -24,14 +23,15 @@ PACKAGES=(
   # The fuzz target of the tool's input path (libFuzzer ships with Debian's clang).
   clang
   # The Python package (python/, setup.py: pybind11, built by setuptools in a virtual
-  # environment of /usr/bin/python3; pkg-config finds Eigen and TBB) and its tests (pytest).
+  # environment of /usr/bin/python3; pkg-config finds Eigen and TBB) and its tests (pytest);
+  # matplotlib (Agg backend) draws its example's picture, and the plots and headless renders
+  # of benchmark/REPORT.md.
   python3 python3-dev python3-numpy python3-pybind11 pybind11-dev python3-pytest python3-venv python3-setuptools
-  python3-wheel pkg-config
+  python3-wheel pkg-config python3-matplotlib
 )
 if [ "${1:-}" = "--report" ]; then
-  # Plots and headless renders of benchmark/REPORT.md (/usr/bin/python3's matplotlib, Agg backend).
-  PACKAGES+=(python3-matplotlib)
-  # /usr/bin/time -v: wall time and peak memory of benchmark/tool_end_to_end.sh.
+  # /usr/bin/time: wall time and peak memory of benchmark/tool_end_to_end.sh and
+  # benchmark/python_overhead.py.
   PACKAGES+=(time)
   # Callgrind: the default's instructions per vertex (benchmark/instructions.sh).
   PACKAGES+=(valgrind)

@@ -34,6 +34,7 @@ fi
 venv="$BUILD_DIR/python-venv"
 rm -rf "$venv"
 /usr/bin/python3 -m venv --system-site-packages "$venv"
+export CE_PYTHON_BUILD_DIR="$BUILD_DIR/python" # also for test_install.py
 CE_PYTHON_JOBS="$JOBS" "$venv/bin/pip" install --no-build-isolation --no-index --no-deps .
 # pytest's exit status 5 (no tests collected) is a failure too, as any other than 0.
 CE_CURVATURE_TOOL="$BUILD_DIR/tools/curvature" CE_BUNNY="$BUILD_DIR/data/meshes/bunny00.off" \

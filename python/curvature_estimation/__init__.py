@@ -10,6 +10,7 @@ cores, 1: sequential, N: at most N threads).
 
 import collections
 import enum
+import re
 import warnings
 from typing import NamedTuple
 
@@ -26,6 +27,7 @@ __all__ = [
     "TetrahedralCurvatures",
     "mesh_curvatures",
     "point_set_curvatures",
+    "read_off",
     "tetrahedral_curvatures",
 ]
 
@@ -114,3 +116,37 @@ def tetrahedral_curvatures(vertices, tetrahedra, scalars, *, rings=None, radius=
     """
     return TetrahedralCurvatures(*_core.tetrahedral_curvatures(vertices, tetrahedra, scalars, rings, radius,
                                                                fit_degree, threads))
+
+
+def read_off(path):
+    """The vertices (n, 3) float64 and faces (m, k) int64 of an ASCII OFF file, for mesh_curvatures.
+
+    OFF as the tool reads it: a header [ST][C][N]OFF, the counts of vertices and faces
+    (and edges, unused), a vertex a line (x y z, then values the header announces, not
+    read), a face a line (k, k indices from 0, then an optional colour); '#' starts a
+    comment. The faces must all have the same number of vertices. Raises ValueError
+    where the file is not such an OFF.
+    """
+    with open(path, encoding="utf-8", errors="replace") as off:
+        lines = [words for words in (line.split("#", 1)[0].split() for line in off) if words]
+    if not lines or not re.fullmatch(r"(ST)?C?N?OFF", lines[0][0]) or "BINARY" in lines[0]:
+        raise ValueError(f"{path}: not an ASCII OFF file (header {' '.join(lines[0]) if lines else 'missing'})")
+    if len(lines[0]) > 1:  # the counts on the header's line
+        counts, body = lines[0][1:], lines[1:]
+    else:
+        counts, body = (lines[1] if len(lines) > 1 else []), lines[2:]
+    if len(counts) < 2:
+        raise ValueError(f"{path}: no counts of vertices and faces after the header")
+    n, m = int(counts[0]), int(counts[1])
+    if len(body) < n + m:
+        raise ValueError(f"{path}: the file ends before its {n} vertices and {m} faces")
+    vertex_lines, face_lines = body[:n], body[n:n + m]
+    sizes = {int(line[0]) for line in face_lines}
+    if len(sizes) > 1:
+        raise ValueError(f"{path}: faces of {sorted(sizes)} vertices: mesh_curvatures takes faces of one size")
+    k = sizes.pop() if sizes else 3
+    if any(len(line) < 3 for line in vertex_lines) or any(len(line) < 1 + k for line in face_lines):
+        raise ValueError(f"{path}: a vertex line holds fewer than 3 values or a face line fewer than its indices")
+    vertices = np.array([[float(w) for w in line[:3]] for line in vertex_lines], dtype=np.float64).reshape(n, 3)
+    faces = np.array([[int(w) for w in line[1:1 + k]] for line in face_lines], dtype=np.int64).reshape(m, k)
+    return vertices, faces

@@ -6,6 +6,7 @@
 // without it. The package's Python layer (curvature_estimation/__init__.py) names the outputs.
 #include "arrays.h"
 #include "point_sets.h"
+#include "surface_rows.h"
 
 #include "command_line.h"
 #include "mesh_readers.h"
@@ -17,6 +18,7 @@
 
 #include <pybind11/stl.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -55,6 +57,26 @@ std::optional<Radius> radius_of(const py::object& radius)
   return Radius{value, false};
 }
 
+// The tool's option checks name its flags (--fit-degree); a Python caller gives keywords (fit_degree).
+std::string with_keywords(const std::string& message)
+{
+  const auto in_flag = [&](std::size_t i) {
+    return i < message.size() && (std::islower(static_cast<unsigned char>(message[i])) || message[i] == '-');
+  };
+  std::string text;
+  for (std::size_t i = 0; i < message.size();) {
+    if (message.compare(i, 2, "--") == 0 && i + 2 < message.size() &&
+        std::islower(static_cast<unsigned char>(message[i + 2])))
+    {
+      for (i += 2; in_flag(i); ++i)
+        text += message[i] == '-' ? '_' : message[i];
+    } else {
+      text += message[i++];
+    }
+  }
+  return text;
+}
+
 Options options(const Method* method, std::optional<int> rings, const py::object& radius, std::optional<int> order,
                 std::optional<int> fit_degree, std::optional<int> degree, std::optional<int> monge_degree, int threads,
                 bool tetrahedral)
@@ -74,7 +96,11 @@ Options options(const Method* method, std::optional<int> rings, const py::object
   o.monge_degree = monge_degree;
   o.threads = thread_count(threads);
   o.tetrahedral = tetrahedral;
-  check_options(o);
+  try {
+    check_options(o);
+  } catch (const Tool_error& e) {
+    refuse(with_keywords(one_line(e.what())));
+  }
   return o;
 }
 
@@ -87,6 +113,20 @@ std::vector<std::string> note_lines(const std::string& text)
   for (std::string line; std::getline(in, line);)
     lines.push_back(line.compare(0, prefix.size(), prefix) == 0 ? line.substr(prefix.size()) : line);
   return lines;
+}
+
+// The tool's mesh of the arrays (repaired as it repairs a file); the copies of the arrays
+// are freed before the estimation. The repair swaps std::cerr's buffer while CGAL works:
+// under the GIL, one call at a time.
+Mesh mesh_of(const Float_array& points, const py::handle& faces, std::vector<V>& file_to_mesh, std::ostream& notes)
+{
+  const std::size_t n = static_cast<std::size_t>(points.shape(0));
+  Soup soup;
+  {
+    const Index_rows polygons = index_array(faces, "faces", 0, n); // freed before the mesh is built
+    soup = soup_of(points.data(), n, polygons.indices.data(), polygons.rows(), polygons.columns);
+  }
+  return build_mesh(soup, file_to_mesh, notes);
 }
 
 py::tuple mesh_curvatures(const py::handle& vertices, const py::handle& faces, const std::string& method_name,
@@ -105,22 +145,9 @@ py::tuple mesh_curvatures(const py::handle& vertices, const py::handle& faces, c
 
   const Float_array points = real_array(vertices, "vertices", 3);
   const std::size_t n = static_cast<std::size_t>(points.shape(0));
-  const Index_rows polygons = index_array(faces, "faces", 0, n);
-  Soup soup;
-  soup.points.reserve(n);
-  for (std::size_t i = 0; i < n; ++i)
-    soup.points.emplace_back(points.at(i, 0), points.at(i, 1), points.at(i, 2));
-  soup.faces.reserve(polygons.rows(), polygons.indices.size());
-  for (std::size_t f = 0; f < polygons.rows(); ++f) {
-    for (std::size_t k = 0; k < polygons.columns; ++k)
-      soup.faces.add_index(polygons.row(f)[k]);
-    soup.faces.end_polygon();
-  }
-
-  // The repair swaps std::cerr's buffer while CGAL works: under the GIL, one call at a time.
   std::ostringstream notes;
   std::vector<V> file_to_mesh;
-  Mesh mesh = build_mesh(soup, file_to_mesh, notes);
+  Mesh mesh = mesh_of(points, faces, file_to_mesh, notes);
   const std::vector<std::string> repairs = note_lines(notes.str());
   std::optional<Normal_map> given_normals;
   if (!normals.is_none()) {
@@ -141,24 +168,11 @@ py::tuple mesh_curvatures(const py::handle& vertices, const py::handle& faces, c
   auto k_max = new_array(n), k_min = new_array(n), mean = new_array(n), gaussian = new_array(n);
   auto d_max = new_array(n, 3), d_min = new_array(n, 3);
   py::array_t<std::uint8_t> status(static_cast<py::ssize_t>(n));
-  double* const out[] = {k_max.mutable_data(),    k_min.mutable_data(), mean.mutable_data(),
-                         gaussian.mutable_data(), d_max.mutable_data(), d_min.mutable_data()};
-  std::uint8_t* const out_status = status.mutable_data();
+  const Surface_outputs out{k_max.mutable_data(), k_min.mutable_data(), mean.mutable_data(),  gaussian.mutable_data(),
+                            d_max.mutable_data(), d_min.mutable_data(), status.mutable_data()};
   {
     py::gil_scoped_release release;
-    const Surface_estimates rows = estimate(o, mesh, std::move(file_to_mesh), given_normals);
-    for (std::size_t i = 0; i < n; ++i) {
-      const Row r = rows[i];
-      out[0][i] = r.k_max;
-      out[1][i] = r.k_min;
-      out[2][i] = r.mean;
-      out[3][i] = r.gaussian;
-      for (std::size_t c = 0; c < 3; ++c) {
-        out[4][3 * i + c] = r.d_max[c];
-        out[5][3 * i + c] = r.d_min[c];
-      }
-      out_status[i] = static_cast<std::uint8_t>(r.status);
-    }
+    write_rows(estimate(o, mesh, std::move(file_to_mesh), given_normals), out);
   }
   return py::make_tuple(k_max, k_min, mean, gaussian, d_max, d_min, status, repairs);
 }

@@ -39,21 +39,6 @@ def write_off(path, vertices, faces):
     Path(path).write_text("\n".join(lines) + "\n")
 
 
-def read_off(path):
-    """An OFF's vertices and faces (triangles or polygons of one size), as the tool's reader parses them."""
-    words = Path(path).read_text().split()
-    assert words[0] == "OFF"
-    n, m = int(words[1]), int(words[2])
-    values = words[4:]
-    vertices = np.array([float(w) for w in values[:3 * n]]).reshape(n, 3)
-    rest = [int(w) for w in values[3 * n:]]
-    faces, k = [], 0
-    for _ in range(m):
-        faces.append(rest[k + 1:k + 1 + rest[k]])
-        k += 1 + rest[k]
-    return vertices, np.array(faces, dtype=np.int64)
-
-
 def write_medit(mesh_path, sol_path, vertices, tetrahedra, scalars):
     lines = ["MeshVersionFormatted 2", "Dimension 3", "Vertices", str(len(vertices))]
     lines += [" ".join(text(c) for c in v) + " 0" for v in vertices]
@@ -128,4 +113,4 @@ def bunny():
     path = bunny_path()
     if not path.is_file():
         pytest.skip(f"no bunny at {path} (CMake extracts it from libcgal-demo; or set CE_BUNNY)")
-    return read_off(path)
+    return ce.read_off(path)

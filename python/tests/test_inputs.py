@@ -95,15 +95,18 @@ def test_bad_mesh_arrays(mesh):
 
 
 def test_bad_parameters(mesh):
+    """The tool's option checks, their messages naming the keywords (rings), not the tool's flags (--rings)."""
     v, f = mesh
     refuses("unknown method 'hamann' \\(expected one of paraboloid, curve-network", ce.mesh_curvatures, v, f, "hamann")
-    refuses("--rings applies to", ce.mesh_curvatures, v, f, "curve-network", rings=2)
-    refuses("--radius applies to", ce.mesh_curvatures, v, f, "taubin", radius=0.5)
-    refuses("--radius and --rings exclude each other", ce.mesh_curvatures, v, f, radius=0.5, rings=2)
-    refuses("--fit-degree applies to the paraboloid method only", ce.mesh_curvatures, v, f, "jet", fit_degree=3)
+    refuses("^rings applies to", ce.mesh_curvatures, v, f, "curve-network", rings=2)
+    refuses("^radius applies to the .* methods only, not to 'taubin'$", ce.mesh_curvatures, v, f, "taubin", radius=0.5)
+    refuses("^radius and rings exclude each other", ce.mesh_curvatures, v, f, radius=0.5, rings=2)
+    refuses("^fit_degree applies to the paraboloid method only \\(degree is the jet's\\)$", ce.mesh_curvatures, v, f,
+            "jet", fit_degree=3)
     refuses("fit_degree must be an integer from 2 to 4, got 5", ce.mesh_curvatures, v, f, fit_degree=5)
     refuses("rings must be an integer from 1 to 100, got 0", ce.mesh_curvatures, v, f, rings=0)
-    refuses("--monge-degree 3 exceeds the jet degree 2", ce.mesh_curvatures, v, f, "jet", monge_degree=3)
+    refuses("^monge_degree 3 exceeds the jet degree 2 \\(see degree\\)$", ce.mesh_curvatures, v, f, "jet",
+            monge_degree=3)
     refuses("radius expects a positive length", ce.mesh_curvatures, v, f, radius="four")
     refuses("radius expects a positive length", ce.mesh_curvatures, v, f, radius="-2x")
     refuses("radius must be a positive finite length, got -1.0", ce.mesh_curvatures, v, f, radius=-1.0)
@@ -161,8 +164,8 @@ def test_bad_tetrahedral_input():
     nan = scalars.copy()
     nan[2] = np.nan
     refuses("scalars row 2 holds a non-finite value", f, vertices, tetrahedra, nan)
-    refuses("--fit-degree 4 is for surfaces", f, vertices, tetrahedra, scalars, fit_degree=4)
-    refuses("--radius and --rings exclude", f, vertices, tetrahedra, scalars, radius="2x", rings=2)
+    refuses("^fit_degree 4 is for surfaces", f, vertices, tetrahedra, scalars, fit_degree=4)
+    refuses("^radius and rings exclude", f, vertices, tetrahedra, scalars, radius="2x", rings=2)
 
 
 def test_bad_point_sets():
@@ -176,3 +179,19 @@ def test_bad_point_sets():
     refuses("fit_degree", f, points, fit_degree=7)
     refuses("points is empty", f, np.zeros((0, 3)))
     refuses("normals must have a row per point \\(50\\), got 3", f, points, normals=points[:3])
+
+
+def test_read_off(tmp_path):
+    """read_off: comments, counts on the header's line, colours after a face; faces of two sizes refused."""
+    path = tmp_path / "mesh.off"
+    path.write_text("OFF 4 2 0 # counts here\n0 0 0\n1 0 0\n# a comment\n0 1 0\n1 1 0.5\n3 0 1 2 255 0 0\n3 1 3 2\n")
+    vertices, faces = ce.read_off(path)
+    np.testing.assert_array_equal(vertices, [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0.5]])
+    np.testing.assert_array_equal(faces, [[0, 1, 2], [1, 3, 2]])
+    assert vertices.dtype == np.float64 and faces.dtype == np.int64
+    path.write_text("OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n4 0 1 3 2\n")
+    refuses("faces of \\[3, 4\\] vertices: mesh_curvatures takes faces of one size", ce.read_off, path)
+    path.write_text("PLY\n")
+    refuses("not an ASCII OFF file", ce.read_off, path)
+    path.write_text("OFF\n4 2 0\n0 0 0\n")
+    refuses("the file ends before its 4 vertices and 2 faces", ce.read_off, path)
