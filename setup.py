@@ -4,6 +4,9 @@
 # so that the module's values are the tool's bit for bit. Its objects go to build/python/,
 # or CE_PYTHON_BUILD_DIR (relative to the source tree, where pip builds): a second install
 # with unchanged sources compiles nothing. CE_PYTHON_JOBS: compile jobs (default: all cores).
+# CE_TOOL_PARTS_BUILD: a CMake build directory configured with -DCE_TOOL_PARTS_PIC=ON, its tool
+# built: the extension links that build's tool parts instead of compiling them again
+# (scripts/run_tests.sh; the same objects as the tool's).
 import os
 import re
 import shutil
@@ -39,9 +42,21 @@ if tbb is not None:  # as CE_WITH_TBB: parallel when TBB is there
     define_macros.append(("CGAL_LINKED_WITH_TBB", None))
     libraries += [word[2:] for word in tbb if word.startswith("-l")] + ["tbbmalloc"]
 
+sources = sorted(glob("python/src/*.cpp"))
+extra_objects = []
+parts_build = os.environ.get("CE_TOOL_PARTS_BUILD")
+if parts_build:
+    extra_objects = [os.path.join(parts_build, "tools", f"libcurvature_{name}.a") for name in ("parts", "registry")]
+    missing = [path for path in extra_objects if not os.path.exists(path)]
+    if missing:
+        raise SystemExit(f"CE_TOOL_PARTS_BUILD={parts_build}: no {', '.join(missing)} (build the tool there first)")
+else:
+    sources += [f"tools/{part}.cpp" for part in TOOL_PARTS]
+
 core = Pybind11Extension(
     "curvature_estimation._core",
-    sorted(glob("python/src/*.cpp")) + [f"tools/{part}.cpp" for part in TOOL_PARTS],
+    sources,
+    extra_objects=extra_objects,
     include_dirs=["python/src", "tools", "include", *(flag[2:] for flag in eigen)],
     define_macros=define_macros,
     libraries=libraries,

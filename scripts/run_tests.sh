@@ -21,13 +21,21 @@ if [ -n "${CGAL_DIR:-}" ]; then
   cgal=(-DCGAL_DIR="$CGAL_DIR")
 fi
 
+python="${CE_PYTHON_TESTS:-$([ -n "${CGAL_DIR:-}" ] && echo OFF || echo ON)}"
+# The Python package links this build's tool parts (CE_TOOL_PARTS_BUILD in setup.py) rather
+# than compiling them a second time.
+pic=()
+if [ "$python" = ON ]; then
+  pic=(-DCE_TOOL_PARTS_PIC=ON)
+fi
+
 bash scripts/install_dependencies.sh
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "${cgal[@]}" \
+cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "${cgal[@]}" "${pic[@]}" \
   -DCE_BUILD_TESTS=ON -DCE_BUILD_EXAMPLES=ON -DCE_BUILD_BENCHMARKS="${CE_BUILD_BENCHMARKS:-ON}" "$@"
 cmake --build "$BUILD_DIR" -j "$JOBS"
 ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"
 
-if [ "${CE_PYTHON_TESTS:-$([ -n "${CGAL_DIR:-}" ] && echo OFF || echo ON)}" != ON ]; then
+if [ "$python" != ON ]; then
   echo "run_tests: the Python package's tests are skipped (CE_PYTHON_TESTS is not ON)"
   exit 0
 fi
@@ -35,6 +43,7 @@ venv="$BUILD_DIR/python-venv"
 rm -rf "$venv"
 /usr/bin/python3 -m venv --system-site-packages "$venv"
 export CE_PYTHON_BUILD_DIR="$BUILD_DIR/python" # also for test_install.py
+export CE_TOOL_PARTS_BUILD="$(cd "$BUILD_DIR" && pwd)"
 CE_PYTHON_JOBS="$JOBS" "$venv/bin/pip" install --no-build-isolation --no-index --no-deps .
 # pytest's exit status 5 (no tests collected) is a failure too, as any other than 0.
 CE_CURVATURE_TOOL="$BUILD_DIR/tools/curvature" CE_BUNNY="$BUILD_DIR/data/meshes/bunny00.off" \
