@@ -133,8 +133,9 @@ void print_usage(std::ostream& out)
                "choose the ball's radius per vertex between A and B (R or Nx each;\n"
                "default 1x:16x): where the estimated error of H is least, the noise estimated\n"
                "from the fits' residuals (the 1-ring's estimate kept on clean data); the CSV\n"
-               "and the PLY gain the radius and the noise per vertex; not with --rings\n" +
-                 applies_to(Setting::ball_radius_range));
+               "and the PLY gain the radius and the noise per vertex; not with --rings\n"
+               "(" +
+                 join(readers(Setting::ball_radius_range), ", ") + "; surfaces only)");
   out << "      --scalars FILE the Medit .sol holding f for a .mesh INPUT (default: INPUT with the\n"
          "                     extension .sol, which must exist)\n"
          "      --threads N    1: sequential; N > 1: at most N threads; 0: all cores (default 0)\n"
