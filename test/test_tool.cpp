@@ -16,6 +16,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include "kuhn_grid.h"
+#include "noisy_meshes.h"
 #include "random_numbers.h"
 #include "registry.h"
 #include "surface_mesh_properties.h"
@@ -24,6 +25,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -793,6 +795,28 @@ TEST_F(ToolTest, FitDegrees)
   }
 }
 
+// The mean edge length of m as the tool's mesh of off(m) has it: the same points
+// (the OFF has 17 digits) and the same edges, in the same order.
+double tool_mean_edge_length(const Indexed& m)
+{
+  using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+  std::vector<Point> points;
+  for (const auto& q : m.points)
+    points.emplace_back(q[0], q[1], q[2]);
+  CGAL::Surface_mesh<Point> mesh;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, m.faces, mesh);
+  return CGAL::Curvature_estimation::mean_edge_length(mesh);
+}
+
+// A length with 17 digits, which the tool reads back to the same double.
+std::string exact_text(double x)
+{
+  std::ostringstream s;
+  s.precision(17);
+  s << x;
+  return s.str();
+}
+
 // --radius: the ball's radius in mesh units, or with x in mean edge lengths of
 // the input (an irregular ellipsoid, 642 vertices).
 class RadiusTest : public ToolTest
@@ -808,18 +832,7 @@ protected:
       p = file("ellipsoid.off", off(m));
   }
 
-  // The mean edge length of m as the tool's mesh has it: the same points (the
-  // OFF has 17 digits) and the same edges, in the same order.
-  double mean_edge_length() const
-  {
-    using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
-    std::vector<Point> points;
-    for (const auto& q : m.points)
-      points.emplace_back(q[0], q[1], q[2]);
-    CGAL::Surface_mesh<Point> mesh;
-    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, m.faces, mesh);
-    return CGAL::Curvature_estimation::mean_edge_length(mesh);
-  }
+  double mean_edge_length() const { return tool_mean_edge_length(m); }
 
   // Rejected with one line on stderr that holds every string of `words`.
   void expect_rejected_saying(const std::vector<std::string>& args, const std::vector<std::string>& words)
@@ -838,9 +851,7 @@ protected:
 // methods that take it; and the ball is used (the rows differ from the rings').
 TEST_F(RadiusTest, InMeanEdgesIsInMeshUnits)
 {
-  std::ostringstream radius;
-  radius.precision(17);
-  radius << 4 * mean_edge_length();
+  const std::string radius = exact_text(4 * mean_edge_length());
   for (const std::vector<std::string>& method : {std::vector<std::string>{"-m", "paraboloid"},
                                                  {"-m", "paraboloid", "--fit-degree", "3"},
                                                  {"-m", "jet", "--degree", "3"},
@@ -851,7 +862,7 @@ TEST_F(RadiusTest, InMeanEdgesIsInMeshUnits)
       args.insert(args.end(), {"--radius", r});
       return csv(p, args);
     };
-    const std::vector<Row> in_edges = with("4x"), in_units = with(radius.str()), rings = csv(p, method);
+    const std::vector<Row> in_edges = with("4x"), in_units = with(radius), rings = csv(p, method);
     ASSERT_EQ(in_edges.size(), m.points.size()) << method[1];
     ASSERT_EQ(in_units.size(), m.points.size()) << method[1];
     std::size_t differ_from_rings = 0;
@@ -907,6 +918,169 @@ TEST_F(RadiusTest, Summary)
   const Result sampled = run({"--radius", "2x", file("sphere.off", off(icosphere(4, 1))).string()});
   ASSERT_EQ(sampled.exit_code, 0) << sampled.err;
   EXPECT_NE(sampled.out.find("over 854 evenly spaced vertices"), std::string::npos) << sampled.out;
+}
+
+const char* const auto_radius_header =
+  "k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,radius,noise,status";
+
+// The median of `values` (the upper one of an even count).
+double median(std::vector<double> values)
+{
+  std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(values.size() / 2), values.end());
+  return values[values.size() / 2];
+}
+
+// --radius auto[:A:B]: the radius chosen per vertex (ball_radius_range) on the noisy
+// ellipsoid of the ball_radius tests (2,562 vertices, Gaussian noise of 7% of the mean
+// edge length), and the refusals on the clean one of RadiusTest.
+class AutoRadiusTest : public RadiusTest
+{
+protected:
+  const ce_test::Noisy_ellipsoid_soup noisy = ce_test::noisy_ellipsoid_soup(4, 1);
+  const Indexed noisy_mesh = indexed(noisy.soup);
+  fs::path noisy_path;
+
+  void SetUp() override
+  {
+    RadiusTest::SetUp();
+    if (!IsSkipped())
+      noisy_path = file("noisy_ellipsoid.off", off(noisy_mesh));
+  }
+
+  // The RMS of the H column against the exact H over the rows that are not failed
+  // (all of them, checked).
+  double H_rms(const std::vector<Row>& rows) const
+  {
+    double sum = 0;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      EXPECT_NE(rows[i].status, "failed") << "row " << i;
+      const double e = rows[i].values[2] - noisy.exact[i].H;
+      sum += e * e;
+    }
+    return std::sqrt(sum / double(rows.size()));
+  }
+};
+
+// The columns radius and noise hold finite values on every row (none fails); H is
+// far closer to the exact value than the default 1-ring's, the noise's median is
+// that of the noise added, and the chosen radii lie in the range.
+TEST_F(AutoRadiusTest, RadiusAndNoiseColumns)
+{
+  const std::vector<Row> chosen = csv(noisy_path, {"--radius", "auto"}, auto_radius_header), rings = csv(noisy_path);
+  ASSERT_EQ(chosen.size(), noisy_mesh.points.size());
+  ASSERT_EQ(rings.size(), noisy_mesh.points.size());
+  expect_consistent(chosen, "--radius auto");
+  const double auto_rms = H_rms(chosen), rings_rms = H_rms(rings);
+  std::vector<double> radii, noise;
+  for (const Row& r : chosen) {
+    radii.push_back(r.values[10]);
+    noise.push_back(r.values[11]);
+  }
+  const double h = tool_mean_edge_length(noisy_mesh);
+  std::cout << "noisy ellipsoid, H RMS: 1 ring " << rings_rms << ", --radius auto " << auto_rms << "; median radius "
+            << median(radii) / h << " mean edges, median noise " << median(noise) << " for sigma " << noisy.sigma
+            << '\n';
+  EXPECT_LT(auto_rms, 0.05 * rings_rms);
+  EXPECT_GT(median(noise), 0.7 * noisy.sigma);
+  EXPECT_LT(median(noise), 1.4 * noisy.sigma);
+  EXPECT_GE(median(radii), h);
+  EXPECT_LE(median(radii), 16 * h);
+}
+
+// The bounds in mean edges and in mesh units give the same rows, to the last bit;
+// jet fitting and the fit of degree 3 take them too.
+TEST_F(AutoRadiusTest, BoundsAndMethods)
+{
+  const double h = tool_mean_edge_length(noisy_mesh);
+  const std::vector<Row> in_edges = csv(noisy_path, {"--radius", "auto:2x:8x"}, auto_radius_header),
+                         in_units = csv(noisy_path, {"--radius", "auto:" + exact_text(2 * h) + ":" + exact_text(8 * h)},
+                                        auto_radius_header);
+  ASSERT_EQ(in_edges.size(), noisy_mesh.points.size());
+  ASSERT_EQ(in_units.size(), noisy_mesh.points.size());
+  for (std::size_t i = 0; i < in_edges.size(); ++i) {
+    EXPECT_EQ(in_edges[i].status, in_units[i].status) << "row " << i;
+    EXPECT_EQ(in_edges[i].values, in_units[i].values) << "row " << i;
+  }
+  for (const std::vector<std::string>& method :
+       {std::vector<std::string>{"-m", "jet"}, {"-m", "paraboloid", "--fit-degree", "3"}})
+  {
+    std::vector<std::string> args = method;
+    args.insert(args.end(), {"--radius", "auto:2x:8x"});
+    std::string what;
+    for (const std::string& a : args)
+      what += a + " ";
+    const std::vector<Row> chosen = csv(noisy_path, args, auto_radius_header), rings = csv(noisy_path, method);
+    ASSERT_EQ(chosen.size(), noisy_mesh.points.size()) << what;
+    expect_consistent(chosen, what);
+    const double auto_rms = H_rms(chosen), rings_rms = H_rms(rings);
+    std::cout << what << "H RMS " << auto_rms << ", without --radius " << rings_rms << '\n';
+    EXPECT_LT(auto_rms, 0.2 * rings_rms) << what;
+  }
+}
+
+// The PLY holds the radius and the noise as vertex properties, the CSV's values.
+TEST_F(AutoRadiusTest, PlyProperties)
+{
+  const fs::path output = dir / "auto.ply";
+  const Result r = run({"--radius", "auto", "-o", output.string(), noisy_path.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> mesh;
+  std::ifstream in(output, std::ios::binary);
+  ASSERT_TRUE(CGAL::IO::read_PLY(in, mesh));
+  const std::vector<Row> rows = csv(noisy_path, {"--radius", "auto"}, auto_radius_header);
+  ASSERT_EQ(num_vertices(mesh), rows.size());
+  std::size_t column = 10;
+  for (const char* name : {"v:radius", "v:noise"}) {
+    const auto values = ce_test::find_property_map<decltype(mesh)::Vertex_index, double>(mesh, name);
+    ASSERT_TRUE(values) << "no vertex property " << name;
+    for (auto v : vertices(mesh))
+      EXPECT_EQ((*values)[v], rows[std::size_t(v)].values[column]) << name;
+    ++column;
+  }
+}
+
+// The summary: the range, and the quartiles of the chosen radius and of the noise in
+// mesh units and in mean edges; the noise's median is that of the noise added.
+TEST_F(AutoRadiusTest, Summary)
+{
+  const Result r = run({"--radius", "auto", noisy_path.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const double h = tool_mean_edge_length(noisy_mesh);
+  std::ostringstream range;
+  range << "radius range: " << h << " to " << 16 * h << " (1 to 16 mean edge lengths of " << h << ")";
+  EXPECT_NE(r.out.find(range.str()), std::string::npos) << range.str() << " in\n" << r.out;
+  for (const std::string line : {"chosen radius: ", "noise (standard deviation): "}) {
+    const std::size_t at = r.out.find(line + "min ");
+    ASSERT_NE(at, std::string::npos) << line << " in\n" << r.out;
+    const std::string text = r.out.substr(at, r.out.find('\n', at) - at);
+    for (const char* part : {", 25% ", ", median ", ", 75% ", ", max ", " (in mean edge lengths: "})
+      EXPECT_NE(text.find(part), std::string::npos) << part << " in " << text;
+  }
+  const std::string noise_median = "noise (standard deviation): ";
+  const std::size_t at = r.out.find(", median ", r.out.find(noise_median));
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const double noise = std::strtod(r.out.c_str() + at + 9, nullptr);
+  EXPECT_GT(noise, 0.7 * noisy.sigma) << r.out;
+  EXPECT_LT(noise, 1.4 * noisy.sigma) << r.out;
+  EXPECT_EQ(r.out.find("mean neighborhood"), std::string::npos) << r.out;
+  // Without --radius auto, none of it.
+  const Result rings = run({noisy_path.string()});
+  ASSERT_EQ(rings.exit_code, 0) << rings.err;
+  for (const char* line : {"radius range", "chosen radius", "noise"})
+    EXPECT_EQ(rings.out.find(line), std::string::npos) << line << " in\n" << rings.out;
+}
+
+TEST_F(AutoRadiusTest, BadValuesAreRejected)
+{
+  for (const std::string bad : {"auto:0x:2x", "auto:4x:2x", "auto:abc", "auto:2x", "auto:2x:", "auto::2x",
+                                "auto:1x:2x:3x", "autox", "auto:-1:2"})
+    expect_rejected_saying({"--radius", bad, p.string()}, {"--radius"});
+  expect_rejected_saying({"--radius", "auto:4x:2x", p.string()}, {"A <= B"});
+  // The bounds in different units are compared in mesh units: 1 is more than 4 mean edges here.
+  expect_rejected_saying({"--radius", "auto:1:4x", p.string()}, {"A <= B"});
+  for (const std::string method : {"curve-network", "gauss-map", "taubin", "chen-schmitt"})
+    expect_rejected_saying({"-m", method, "--radius", "auto", p.string()}, {"--radius auto", method});
+  expect_rejected_saying({"--radius", "auto", "--rings", "2", p.string()}, {"--radius", "--rings"});
 }
 
 TEST_F(ToolTest, CsvRowsFollowTheFileOrder)
@@ -1336,6 +1510,7 @@ TEST_F(TetrahedralTest, OptionsThatDoNotApply)
   expect_rejected({"-m", "jet", p.string()}, "jet on .mesh");
   expect_rejected({"-m", "jet", "--radius", "2x", p.string()}, "jet with --radius on .mesh");
   expect_rejected({"--radius", "2x", "--rings", "2", p.string()}, "--radius with --rings on .mesh");
+  expect_rejected({"--radius", "auto", p.string()}, "--radius auto on .mesh");
   const fs::path ply = dir / "out.ply";
   const Result r = run({"-o", ply.string(), p.string()});
   EXPECT_EQ(r.exit_code, 2);
@@ -1374,11 +1549,9 @@ TEST_F(TetrahedralTest, RadiusIsABallOfR4)
                             (q[2] - r[2]) * (q[2] - r[2]) + (f[a] - f[b]) * (f[a] - f[b]));
   }
   const double mean_edge = length_sum / double(edges.size());
-  std::ostringstream radius;
-  radius.precision(17);
-  radius << 3 * mean_edge;
+  const std::string radius = exact_text(3 * mean_edge);
 
-  const std::vector<Row> in_edges = rows(p, {"--radius", "3x"}), in_units = rows(p, {"--radius", radius.str()}),
+  const std::vector<Row> in_edges = rows(p, {"--radius", "3x"}), in_units = rows(p, {"--radius", radius}),
                          rings = rows(p);
   ASSERT_EQ(in_edges.size(), t.points.size());
   ASSERT_EQ(in_units.size(), t.points.size());

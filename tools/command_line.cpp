@@ -129,6 +129,13 @@ void print_usage(std::ostream& out)
                "more vertices (status widened); on .mesh input the ball and the edges are in\n"
                "R^4, of the points (x, y, z, f); not with --rings\n" +
                  applies_to(Setting::ball_radius));
+  print_option(out, "    --radius auto[:A:B]",
+               "choose the ball's radius per vertex between A and B (R or Nx each;\n"
+               "default 1x:16x): where the estimated error of H is least, the noise estimated\n"
+               "from the fits' residuals (the 1-ring's estimate kept on clean data); the CSV\n"
+               "and the PLY gain the radius and the noise per vertex; not with --rings\n"
+               "(" +
+                 join(readers(Setting::ball_radius_range), ", ") + "; surfaces only)");
   out << "      --scalars FILE the Medit .sol holding f for a .mesh INPUT (default: INPUT with the\n"
          "                     extension .sol, which must exist)\n"
          "      --threads N    1: sequential; N > 1: at most N threads; 0: all cores (default 0)\n"
@@ -142,6 +149,8 @@ void print_usage(std::ostream& out)
          "determines the fit) or failed, and a failed row has nan values. PLY: the input's\n"
          "vertices and faces with these values as vertex properties (status as 0 ok, 1 widened,\n"
          "2 failed, 3 fallback) and RGB colours.\n"
+         "With --radius auto, radius (the chosen radius) and noise (the standard deviation of the\n"
+         "heights' noise), in mesh units, come before status in the CSV and are PLY properties too.\n"
          "OFF is ASCII with an OFF, COFF, NOFF or STOFF header; PLY (ASCII or binary), OBJ and STL\n"
          "are read by CGAL after checks of what its readers do not survive.\n"
          "\n"
@@ -177,6 +186,19 @@ int parse_int(const std::string& option, const std::string& text, int min_value,
            ", got '" + text + "'",
          2);
   return value;
+}
+
+// auto or auto:A:B, A and B as parse_radius takes them.
+Radius_range parse_radius_range(const std::string& option, const std::string& text)
+{
+  if (text == "auto")
+    return default_radius_range;
+  const std::size_t colon = text.find(':', 5);
+  if (text.compare(0, 5, "auto:") != 0 || colon == std::string::npos)
+    fail(option + " expects a length, auto, or auto:A:B with A and B lengths (as in auto:2x:16x), got '" + text + "'",
+         2);
+  const std::string what = option + " " + text;
+  return {parse_radius(what, text.substr(5, colon - 5)), parse_radius(what, text.substr(colon + 1))};
 }
 
 } // namespace
@@ -219,11 +241,15 @@ void check_options(const Options& o)
   } else if (!o.scalars.empty()) {
     fail("--scalars applies to tetrahedral input (.mesh) only", 2);
   }
-  if (o.radius) {
+  if (o.radius)
     check_read(o, "--radius", Setting::ball_radius, "");
-    if (o.rings)
-      fail("--radius and --rings exclude each other: a neighborhood is a ball or rings", 2);
+  if (o.radius_range) {
+    check_read(o, "--radius auto", Setting::ball_radius_range, "");
+    if (o.tetrahedral)
+      fail("--radius auto is for surfaces: give tetrahedral input (.mesh) a radius", 2);
   }
+  if ((o.radius || o.radius_range) && o.rings)
+    fail("--radius and --rings exclude each other: a neighborhood is a ball or rings", 2);
   if (!o.output.empty()) {
     const std::string ext = lower_extension(o.output);
     if (ext != ".csv" && ext != ".ply")
@@ -261,7 +287,13 @@ std::optional<Options> parse_arguments(int argc, char** argv)
     } else if (arg == "-o" || arg == "--output") {
       o.output = value(arg);
     } else if (arg == "--radius") {
-      o.radius = parse_radius(arg, value(arg));
+      const std::string text = value(arg);
+      o.radius.reset();
+      o.radius_range.reset();
+      if (text.compare(0, 4, "auto") == 0)
+        o.radius_range = parse_radius_range(arg, text);
+      else
+        o.radius = parse_radius(arg, text);
     } else if (arg == "--scalars") {
       o.scalars = value(arg);
     } else if (arg == "--threads") {

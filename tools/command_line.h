@@ -26,6 +26,14 @@ struct Radius
   bool in_mean_edges;
 };
 
+// --radius auto[:A:B]: the radius chosen per vertex between A and B (Radius each).
+struct Radius_range
+{
+  Radius min, max;
+};
+// --radius auto: the range of the manual's measurements of the selection.
+constexpr Radius_range default_radius_range{{1, true}, {16, true}};
+
 struct Options
 {
   std::string input;
@@ -34,6 +42,8 @@ struct Options
   // The options of the registry's settings, checked against the method's.
   std::optional<int> rings;
   std::optional<Radius> radius;
+  // --radius auto: ball_radius_range
+  std::optional<Radius_range> radius_range;
   std::optional<int> order;                // extrapolation_order
   std::optional<int> fit_degree;           // fit_degree
   std::optional<int> degree, monge_degree; // jet_degree, monge_degree

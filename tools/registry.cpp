@@ -33,13 +33,14 @@ enum class Neighborhood
 {
   none,
   rings,
-  rings_or_ball
+  rings_or_ball,
+  rings_ball_or_selected // or the radius chosen per vertex
 };
 
 // Calls `estimate(tag, np)`: `tag` the concurrency `threads` asks for, `np` = `base` with the
-// neighborhood N of `s` (its ball where it has one and N allows, else its rings; max_rings
-// defaults to max(3, rings), or to rings + `extra_rings` where that is given) and, with
-// GivenNormals, the given normals of `s` if it has any.
+// neighborhood N of `s` (its radius selection or its ball where it has one and N allows,
+// else its rings; max_rings defaults to max(3, rings), or to rings + `extra_rings` where
+// that is given) and, with GivenNormals, the given normals of `s` if it has any.
 template <Neighborhood N, bool GivenNormals, typename NamedParameters, typename Estimate>
 void estimate_with(const Settings& s, int threads, const NamedParameters& base, const Estimate& estimate,
                    std::optional<int> extra_rings = std::nullopt)
@@ -57,7 +58,14 @@ void estimate_with(const Settings& s, int threads, const NamedParameters& base, 
     if constexpr (N == Neighborhood::none) {
       with_normals(base);
     } else {
-      if constexpr (N == Neighborhood::rings_or_ball) {
+      if constexpr (N == Neighborhood::rings_ball_or_selected) {
+        if (s.radius_selection) {
+          const Settings::Radius_selection& r = *s.radius_selection;
+          with_normals(base.ball_radius_range(r.range).vertex_ball_radius_map(r.radius).vertex_noise_map(r.noise));
+          return;
+        }
+      }
+      if constexpr (N != Neighborhood::rings) {
         if (s.ball_radius) {
           with_normals(base.ball_radius(*s.ball_radius));
           return;
@@ -72,7 +80,7 @@ void estimate_with(const Settings& s, int threads, const NamedParameters& base, 
 
 void run_paraboloid(const Mesh& mesh, const Settings& s, const Outputs& o, int threads)
 {
-  estimate_with<Neighborhood::rings_or_ball, true>(
+  estimate_with<Neighborhood::rings_ball_or_selected, true>(
     s, threads, outputs_and_normal_method(s, o).fit_degree(s.fit_degree.value_or(default_of(Setting::fit_degree))),
     [&](auto tag, const auto& np) { CE::paraboloid_fitting_curvatures<decltype(tag)>(mesh, np); });
 }
@@ -110,7 +118,7 @@ void run_jet(const Mesh& mesh, const Settings& s, const Outputs& o, int threads)
 {
   // CGAL's jet fitting widens up to 3 rings beyond the first by default.
   constexpr int jet_extra_rings = 3;
-  estimate_with<Neighborhood::rings_or_ball, false>(
+  estimate_with<Neighborhood::rings_ball_or_selected, false>(
     s, threads,
     output_parameters(o)
       .jet_degree(s.jet_degree.value_or(default_of(Setting::jet_degree)))
@@ -139,6 +147,8 @@ const char* setting_name(Setting s)
       return "vertex_normal_method";
     case Setting::given_normals:
       return "vertex_normal_map";
+    case Setting::ball_radius_range:
+      return "ball_radius_range";
   }
   return "unknown setting";
 }
@@ -158,6 +168,7 @@ unsigned given_settings(const Settings& s)
   add(bool(s.monge_degree), Setting::monge_degree);
   add(bool(s.normal_method), Setting::normals);
   add(bool(s.given_normals), Setting::given_normals);
+  add(bool(s.radius_selection), Setting::ball_radius_range);
   return given;
 }
 
@@ -202,8 +213,9 @@ const std::vector<Method>& methods()
   // Fields: name, label, settings read, quantities, parallel, tetrahedral input, CGAL's fit, run.
   static const std::vector<Method> all = {
     {"paraboloid", "paraboloid fit",
-     Setting::rings | Setting::ball_radius | Setting::fit_degree | Setting::normals | Setting::given_normals, gives_all,
-     true, true, false, run_paraboloid},
+     Setting::rings | Setting::ball_radius | Setting::ball_radius_range | Setting::fit_degree | Setting::normals |
+       Setting::given_normals,
+     gives_all, true, true, false, run_paraboloid},
     {"curve-network", "curve network", Setting::extrapolation_order | Setting::given_normals, gives_all, true, false,
      false, run_curve_network},
     {"gauss-map", "Gauss map", Setting::rings | Setting::ball_radius | Setting::normals | Setting::given_normals,
@@ -212,7 +224,8 @@ const std::vector<Method>& methods()
      run_taubin},
     {"chen-schmitt", "Chen-Schmitt", Setting::rings | Setting::normals | Setting::given_normals, gives_all, true, false,
      false, run_chen_schmitt},
-    {"jet", "jet fitting", Setting::rings | Setting::ball_radius | Setting::jet_degree | Setting::monge_degree,
+    {"jet", "jet fitting",
+     Setting::rings | Setting::ball_radius | Setting::ball_radius_range | Setting::jet_degree | Setting::monge_degree,
      gives_all, true, false, true, run_jet},
   };
   return all;
@@ -232,9 +245,11 @@ void run(const Method& method, const Mesh& mesh, const Settings& settings, const
   const auto refuse = [&](const std::string& what) {
     throw std::invalid_argument(std::string("curvature method '") + method.name + "': " + what);
   };
-  for (unsigned bit = 1; bit <= static_cast<unsigned>(Setting::given_normals); bit <<= 1)
+  for (unsigned bit = 1; bit <= static_cast<unsigned>(Setting::ball_radius_range); bit <<= 1)
     if ((given_settings(settings) & bit) && !(method.reads & bit))
       refuse(std::string("does not read ") + setting_name(Setting(bit)));
+  if (settings.ball_radius && settings.radius_selection)
+    refuse("ball_radius and ball_radius_range exclude each other");
   const auto check = [&](const std::optional<int>& value, Setting setting, int max) {
     const int min = integer_range(setting).min;
     if (value && (*value < min || *value > max))

@@ -21,6 +21,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ce_tool {
@@ -35,6 +36,14 @@ struct Settings
   std::optional<int> max_rings;      // max_neighborhood_rings (default: rings + 3 for jet, as CGAL's jet
                                      // fitting, else max(3, rings))
   std::optional<double> ball_radius; // ball_radius, in mesh units; instead of the rings
+  // ball_radius_range (min, max), in mesh units, with its outputs vertex_ball_radius_map and
+  // vertex_noise_map: the radius chosen per vertex; instead of the rings and of ball_radius.
+  struct Radius_selection
+  {
+    std::pair<double, double> range;
+    Mesh::Property_map<V, double> radius, noise;
+  };
+  std::optional<Radius_selection> radius_selection;
   std::optional<int> fit_degree, extrapolation_order, jet_degree, monge_degree;
   std::optional<CE::Vertex_normal_method> normal_method; // vertex_normal_method (default quadric_fit)
   std::optional<Normal_map> given_normals;               // vertex_normal_map (default: none, estimated)
@@ -51,7 +60,8 @@ enum class Setting : unsigned
   jet_degree = 1 << 4,
   monge_degree = 1 << 5,
   normals = 1 << 6,
-  given_normals = 1 << 7
+  given_normals = 1 << 7,
+  ball_radius_range = 1 << 8 // and its outputs
 };
 constexpr unsigned operator|(unsigned bits, Setting s) { return bits | static_cast<unsigned>(s); }
 constexpr unsigned operator|(Setting a, Setting b) { return static_cast<unsigned>(a) | b; }

@@ -2,6 +2,7 @@
 #include "summary.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <iomanip>
 #include <iostream>
@@ -37,6 +38,53 @@ void print_ball(double radius, double mean_edge_length, const Ball_size& size, s
   if (size.sampled < vertices)
     std::cout << "; over " << size.sampled << " evenly spaced vertices";
   std::cout << ")\n";
+}
+
+// The min, quartiles and max of `values` in mesh units and in units of `h`, with
+// `name`; `estimated`: the number of estimated vertices, which the line names where
+// some have no value.
+void print_quartiles(const char* name, std::vector<double> values, double h, std::size_t estimated)
+{
+  if (values.empty()) {
+    std::cout << name << ": no estimate\n";
+    return;
+  }
+  std::sort(values.begin(), values.end());
+  const auto at = [&](double q) { return values[std::size_t(std::lround(q * double(values.size() - 1)))]; };
+  const double quantiles[] = {at(0), at(0.25), at(0.5), at(0.75), at(1)};
+  const char* labels[] = {"min ", ", 25% ", ", median ", ", 75% ", ", max "};
+  std::cout << name << ": ";
+  for (std::size_t k = 0; k < 5; ++k)
+    std::cout << labels[k] << quantiles[k];
+  std::cout << " (in mean edge lengths:";
+  for (std::size_t k = 0; k < 5; ++k)
+    std::cout << (k == 0 ? " " : ", ") << quantiles[k] / h;
+  std::cout << ')';
+  if (values.size() < estimated)
+    std::cout << ", over " << values.size() << " of " << estimated << " estimated vertices";
+  std::cout << '\n';
+}
+
+// --radius auto: the range, and the distributions of the chosen radius and of the
+// noise over the estimated vertices.
+void print_radius_selection(const Surface_estimates& rows)
+{
+  const auto [min, max] = rows.radius_selection->range;
+  const double h = rows.mean_edge_length;
+  std::cout << "radius range: " << min << " to " << max << " (" << min / h << " to " << max / h
+            << " mean edge lengths of " << h << ")\n";
+  std::vector<double> radii, noise;
+  std::size_t estimated = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const auto [radius, sigma] = rows.radius_and_noise(i);
+    estimated += rows[i].status != CE::Estimation_status::not_estimable;
+    if (std::isfinite(radius))
+      radii.push_back(radius);
+    if (std::isfinite(sigma))
+      noise.push_back(sigma);
+  }
+  print_quartiles("chosen radius", radii, h, estimated);
+  print_quartiles("noise (standard deviation)", noise, h, estimated);
 }
 
 // The summary's lines after the input's: time, ranges of H and K, status counts.
@@ -86,6 +134,8 @@ void print_surface_summary(const Options& o, const Soup& soup, const Mesh& mesh,
             << "method: " << o.method->name << '\n';
   if (rows.ball_radius > 0)
     print_ball(rows.ball_radius, rows.mean_edge_length, mean_ball_size(mesh, rows.ball_radius), num_vertices(mesh));
+  if (rows.radius_selection)
+    print_radius_selection(rows);
   print_estimates(rows, num_vertices(mesh), rows.seconds);
 }
 

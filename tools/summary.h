@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The summary the tool prints on stdout when no output file is asked for: the
 // input, the method (with --radius, the radius and the mean number of vertices in
-// a ball), the time, the ranges of H and K and the status counts.
+// a ball; with --radius auto, the range and the quartiles of the chosen radius and
+// of the noise), the time, the ranges of H and K and the status counts.
 #ifndef CE_TOOLS_SUMMARY_H
 #define CE_TOOLS_SUMMARY_H
 

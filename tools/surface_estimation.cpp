@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <sstream>
 #include <utility>
 
 namespace ce_tool {
@@ -38,6 +39,14 @@ Row Surface_estimates::operator[](std::size_t i) const
              maps.status[v]};
 }
 
+std::array<double, 2> Surface_estimates::radius_and_noise(std::size_t i) const
+{
+  const V v = file_to_mesh[i];
+  if (v == V() || maps.status[v] == CE::Estimation_status::not_estimable)
+    return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+  return {radius_selection->radius[v], radius_selection->noise[v]};
+}
+
 Surface_estimates estimate(const Options& o, Mesh& mesh, std::vector<V> file_to_mesh,
                            const std::optional<Normal_map>& given_normals)
 {
@@ -51,6 +60,19 @@ Surface_estimates estimate(const Options& o, Mesh& mesh, std::vector<V> file_to_
     e.mean_edge_length = CE::mean_edge_length(mesh);
     e.ball_radius = ball_radius(*o.radius, e.mean_edge_length);
     settings.ball_radius = e.ball_radius;
+  } else if (o.radius_range) {
+    e.mean_edge_length = CE::mean_edge_length(mesh);
+    const double min = ball_radius(o.radius_range->min, e.mean_edge_length),
+                 max = ball_radius(o.radius_range->max, e.mean_edge_length);
+    if (min > max) {
+      std::ostringstream message;
+      message << "--radius auto:A:B needs A <= B: here A is " << min << " and B " << max << " in mesh units";
+      fail(message.str(), 2);
+    }
+    e.radius_selection = Settings::Radius_selection{{min, max},
+                                                    mesh.add_property_map<V, double>("v:ce_radius").first,
+                                                    mesh.add_property_map<V, double>("v:ce_noise").first};
+    settings.radius_selection = e.radius_selection;
   } else if (o.method->reads_setting(Setting::rings)) {
     settings.rings = rings(o);
     settings.max_rings = max_rings(o);

@@ -47,13 +47,19 @@ struct Surface_estimates
   // With --radius: the balls' radius in mesh units and the mean edge length of the
   // mesh; 0 without it (or where the mesh is empty).
   double ball_radius = 0, mean_edge_length = 0;
+  // With --radius auto: the range in mesh units (the mean edge length as above), and the
+  // radius chosen and the noise estimated per vertex.
+  std::optional<Settings::Radius_selection> radius_selection;
 
   std::size_t size() const { return file_to_mesh.size(); }
   Row operator[](std::size_t i) const;
+  // With --radius auto: the chosen radius and the noise of the file's vertex i; NaN
+  // where its row is failed.
+  std::array<double, 2> radius_and_noise(std::size_t i) const;
 };
 
 // Runs the method --method picks; its outputs are property maps added to `mesh`.
-// --radius Nx is N times the mean edge length of `mesh`. `given_normals` (the Python
+// --radius Nx (and --radius auto's bounds Nx) is N times the mean edge length of `mesh`. `given_normals` (the Python
 // module's; the tool has none) are the mesh's vertex normals, for the methods that read them.
 Surface_estimates estimate(const Options& o, Mesh& mesh, std::vector<V> file_to_mesh,
                            const std::optional<Normal_map>& given_normals = std::nullopt);

@@ -95,11 +95,39 @@ void put_binary(std::string& out, double x)
   put_le(out, bits);
 }
 
+// The rows of --radius auto: a Row's values, then the radius and the noise.
+struct Rows_with_radius
+{
+  const Surface_estimates& rows;
+
+  struct Values
+  {
+    std::array<double, 12> all;
+    CE::Estimation_status status;
+    const std::array<double, 12>& values() const { return all; }
+  };
+  std::size_t size() const { return rows.size(); }
+  Values operator[](std::size_t i) const
+  {
+    const Row r = rows[i];
+    const auto row = r.values();
+    const auto radius_and_noise = rows.radius_and_noise(i);
+    Values v{{}, r.status};
+    std::copy(row.begin(), row.end(), v.all.begin());
+    std::copy(radius_and_noise.begin(), radius_and_noise.end(), v.all.begin() + row.size());
+    return v;
+  }
+};
+
 } // namespace
 
 void write_surface_csv(Atomic_file& out, const Surface_estimates& rows)
 {
-  write_csv(out, "k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,status", rows);
+  if (rows.radius_selection)
+    write_csv(out, "k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,radius,noise,status",
+              Rows_with_radius{rows});
+  else
+    write_csv(out, "k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,status", rows);
 }
 
 void write_tetrahedral_csv(Atomic_file& out, const std::vector<Tetrahedral_row>& rows)
@@ -141,6 +169,8 @@ void write_ply(Atomic_file& file, const Soup& soup, const Surface_estimates& row
   for (const char* name : {"x", "y", "z", "k_max", "k_min", "mean", "gaussian", "d_max_x", "d_max_y", "d_max_z",
                            "d_min_x", "d_min_y", "d_min_z"})
     out += std::string("property double ") + name + "\n";
+  if (rows.radius_selection)
+    out += "property double radius\nproperty double noise\n";
   out += "property uchar status\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n";
   out += "element face " + std::to_string(faces) + "\n";
   out += "property list uchar int vertex_indices\n";
@@ -152,6 +182,9 @@ void write_ply(Atomic_file& file, const Soup& soup, const Surface_estimates& row
       put_binary(out, x);
     for (double x : r.values())
       put_binary(out, x);
+    if (rows.radius_selection)
+      for (double x : rows.radius_and_noise(i))
+        put_binary(out, x);
     out += static_cast<char>(r.status);
     for (unsigned char c : colour(quantity(r, q), scale))
       out += static_cast<char>(c);
