@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <initializer_list>
 #include <limits>
 #include <tuple>
 
@@ -95,19 +96,11 @@ void put_binary(std::string& out, double x)
   put_le(out, bits);
 }
 
-} // namespace
-
-void write_surface_csv(Atomic_file& out, const Surface_estimates& rows)
-{
-  write_csv(out, "k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,status", rows);
-}
-
-void write_tetrahedral_csv(Atomic_file& out, const std::vector<Tetrahedral_row>& rows)
-{
-  write_csv(out, "k_1,k_2,k_3,mean,gaussian,status", rows);
-}
-
-void write_ply(Atomic_file& file, const Soup& soup, const Surface_estimates& rows, Quantity q)
+// The PLY of `points` (`what` they are, in a comment), the rows' values() as vertex
+// properties named `names`, their status and colours of `q`, then `faces` if given.
+template <typename Rows>
+void write_ply_of(Atomic_file& file, const char* what, const std::vector<Point>& points, const Rows& rows, Quantity q,
+                  std::initializer_list<const char*> names, const Flat_polygons* faces)
 {
   std::vector<double> magnitudes;
   for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -123,31 +116,34 @@ void write_ply(Atomic_file& file, const Soup& soup, const Surface_estimates& row
   }
   magnitudes = std::vector<double>();
 
-  std::size_t faces = 0;
-  for (std::size_t f = 0; f < soup.faces.size(); ++f) {
-    const std::size_t n = soup.faces[f].size();
+  std::size_t face_count = 0;
+  for (std::size_t f = 0; faces && f < faces->size(); ++f) {
+    const std::size_t n = (*faces)[f].size();
     if (n > 255)
       fail("a face of the input has more than 255 vertices, which the PLY output does not support");
-    faces += n >= 3;
+    face_count += n >= 3;
   }
 
   std::string& out = file.text();
   out += "ply\nformat binary_little_endian 1.0\n";
-  out += "comment written by curvature: the vertices and faces of the input file, in its order\n";
+  out += std::string("comment written by curvature: ") + what + ", in its order\n";
   out += "comment status: 0 = ok, 1 = widened, 2 = failed (its curvature values are NaN), 3 = fallback\n";
   out += std::string("comment colours: ") + quantity_name(q) +
          ", blue < 0 < red, saturated at the 95th percentile of |value|; failed grey\n";
-  out += "element vertex " + std::to_string(soup.points.size()) + "\n";
-  for (const char* name : {"x", "y", "z", "k_max", "k_min", "mean", "gaussian", "d_max_x", "d_max_y", "d_max_z",
-                           "d_min_x", "d_min_y", "d_min_z"})
+  out += "element vertex " + std::to_string(points.size()) + "\n";
+  for (const char* coordinate : {"x", "y", "z"})
+    out += std::string("property double ") + coordinate + "\n";
+  for (const char* name : names)
     out += std::string("property double ") + name + "\n";
   out += "property uchar status\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n";
-  out += "element face " + std::to_string(faces) + "\n";
-  out += "property list uchar int vertex_indices\n";
+  if (faces) {
+    out += "element face " + std::to_string(face_count) + "\n";
+    out += "property list uchar int vertex_indices\n";
+  }
   out += "end_header\n";
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    const Point& p = soup.points[i];
-    const Row r = rows[i];
+    const Point& p = points[i];
+    const auto r = rows[i];
     for (double x : {p.x(), p.y(), p.z()})
       put_binary(out, x);
     for (double x : r.values())
@@ -157,8 +153,8 @@ void write_ply(Atomic_file& file, const Soup& soup, const Surface_estimates& row
       out += static_cast<char>(c);
     file.flush_if_full();
   }
-  for (std::size_t f = 0; f < soup.faces.size(); ++f) {
-    const Flat_polygons::Polygon p = soup.faces[f];
+  for (std::size_t f = 0; faces && f < faces->size(); ++f) {
+    const Flat_polygons::Polygon p = (*faces)[f];
     if (p.size() < 3)
       continue;
     out += static_cast<char>(p.size());
@@ -169,6 +165,39 @@ void write_ply(Atomic_file& file, const Soup& soup, const Surface_estimates& row
     }
     file.flush_if_full();
   }
+}
+
+} // namespace
+
+void write_surface_csv(Atomic_file& out, const Surface_estimates& rows)
+{
+  write_csv(out, "k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,status", rows);
+}
+
+void write_tetrahedral_csv(Atomic_file& out, const std::vector<Tetrahedral_row>& rows)
+{
+  write_csv(out, "k_1,k_2,k_3,mean,gaussian,status", rows);
+}
+
+void write_ply(Atomic_file& file, const Soup& soup, const Surface_estimates& rows, Quantity q)
+{
+  write_ply_of(file, "the vertices and faces of the input file", soup.points, rows, q,
+               {"k_max", "k_min", "mean", "gaussian", "d_max_x", "d_max_y", "d_max_z", "d_min_x", "d_min_y", "d_min_z"},
+               &soup.faces);
+}
+
+void write_point_set_csv(Atomic_file& out, const Point_set_estimates& rows)
+{
+  write_csv(out, "k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,nx,ny,nz,status", rows);
+}
+
+void write_point_set_ply(Atomic_file& file, const std::vector<Point>& points, const Point_set_estimates& rows,
+                         Quantity q)
+{
+  write_ply_of(file, "the points of the input file, without faces", points, rows, q,
+               {"k_max", "k_min", "mean", "gaussian", "d_max_x", "d_max_y", "d_max_z", "d_min_x", "d_min_y", "d_min_z",
+                "nx", "ny", "nz"},
+               nullptr);
 }
 
 } // namespace ce_tool
