@@ -4,7 +4,9 @@
 //  - bad input: non-zero exit, exactly one line on stderr, no output file left;
 //  - accepted degenerate input: one row per file vertex, nan on failed rows;
 //  - the CSV and PLY formats, and the mean curvature of a sphere;
-//  - tetrahedral input (Medit .mesh + .sol): the CSV, and the curvature of graphs.
+//  - tetrahedral input (Medit .mesh + .sol): the CSV, and the curvature of graphs;
+//  - point sets (.xyz, .pwn, PLY and OFF without faces): every format read alike, the
+//    rows in the file's order, the sphere's H and its sign, the summary, bad input.
 // tools/CMakeLists.txt defines CE_CURVATURE_TOOL (the built tool's path) and links the
 // tool's registry of methods.
 #include <gtest/gtest.h>
@@ -33,6 +35,8 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
+#include <numeric>
 #include <random>
 #include <set>
 #include <sstream>
@@ -391,7 +395,7 @@ TEST_F(ToolTest, UnreadableFile)
 
 TEST_F(ToolTest, UnknownExtension)
 {
-  expect_rejected({file("mesh.xyz", off(tetrahedron())).string()}, "unknown extension");
+  expect_rejected({file("mesh.xyzw", off(tetrahedron())).string()}, "unknown extension");
   expect_rejected({file("mesh", off(tetrahedron())).string()}, "no extension");
 }
 
@@ -424,7 +428,7 @@ TEST_F(ToolTest, BadOptions)
 TEST_F(ToolTest, GarbageFiles)
 {
   const std::string garbage = "this is not a mesh\n\x01\x02\x03\xff\xfe garbage 12 ; ,,\n";
-  for (const std::string ext : {".off", ".ply", ".obj", ".stl"})
+  for (const std::string ext : {".off", ".ply", ".obj", ".stl", ".xyz", ".pwn"})
     expect_rejected({file("garbage" + ext, garbage).string()}, "garbage " + ext);
   expect_rejected({file("zero_bytes.off", "").string()}, "zero-byte file");
 }
@@ -502,7 +506,6 @@ TEST_F(ToolTest, IndicesOutOfRange)
 TEST_F(ToolTest, EmptyMesh)
 {
   expect_rejected({file("empty.off", "OFF\n0 0 0\n").string()}, "empty OFF");
-  expect_rejected({file("points_only.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n").string()}, "OFF without faces");
   expect_rejected({file("empty.obj", "# nothing\n").string()}, "empty OBJ");
   const std::string ply = ascii_ply(ply_vertex_element(0) + ply_face_element(0));
   expect_rejected({file("empty.ply", ply).string()}, "empty PLY");
@@ -1644,6 +1647,343 @@ TEST_F(TetrahedralTest, BadInput)
     file(name + ".sol", text);
     expect_rejected({file(name + ".mesh", mesh).string()}, name);
   }
+}
+
+// ---------------------------------------------------------------------------
+// Point sets
+// ---------------------------------------------------------------------------
+
+const char* const point_set_csv_header =
+  "k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,nx,ny,nz,status";
+
+using Vec3 = std::array<double, 3>;
+
+struct Points
+{
+  std::vector<Vec3> points, normals; // normals: none, or one per point
+};
+
+// n points of a Fibonacci spiral on the sphere of radius r about `center`, with the
+// outward normals; each value a multiple of 2^-10, so that every format holds exactly
+// the same values (CGAL's ASCII PLY reader does not round 17 digits to the nearest
+// float or double, as the tool's readers do: the rows differed in the last bits).
+Points sphere_points(std::size_t n, double r, const Vec3& center)
+{
+  Points s;
+  const double golden = M_PI * (3 - std::sqrt(5.0));
+  for (std::size_t i = 0; i < n; ++i) {
+    const double z = 1 - 2 * (double(i) + 0.5) / double(n), rho = std::sqrt(1 - z * z), a = golden * double(i);
+    const Vec3 u = {rho * std::cos(a), rho * std::sin(a), z};
+    Vec3 p, normal;
+    for (int c = 0; c < 3; ++c) {
+      p[c] = std::round(1024 * (center[c] + r * u[c])) / 1024;
+      normal[c] = std::round(1024 * u[c]) / 1024;
+    }
+    s.points.push_back(p);
+    s.normals.push_back(normal);
+  }
+  return s;
+}
+
+std::string values_line(const Vec3& a, const Vec3* b = nullptr)
+{
+  std::ostringstream s;
+  s.precision(17);
+  s << a[0] << ' ' << a[1] << ' ' << a[2];
+  if (b)
+    s << ' ' << (*b)[0] << ' ' << (*b)[1] << ' ' << (*b)[2];
+  return s.str() + "\n";
+}
+
+// .xyz (or .pwn) text: a point a line, with its normal where the points have normals.
+std::string xyz(const Points& s, const std::string& first_line = "")
+{
+  std::string text = first_line;
+  for (std::size_t i = 0; i < s.points.size(); ++i)
+    text += values_line(s.points[i], s.normals.empty() ? nullptr : &s.normals[i]);
+  return text;
+}
+
+std::string ply_point_properties(const Points& s, const char* type)
+{
+  std::string header = "element vertex " + std::to_string(s.points.size()) + "\n";
+  for (const char* name : {"x", "y", "z", "nx", "ny", "nz"})
+    if (name[0] != 'n' || !s.normals.empty())
+      header += std::string("property ") + type + " " + name + "\n";
+  return header;
+}
+
+std::string ascii_ply_points(const Points& s) { return ascii_ply(ply_point_properties(s, "float"), xyz(s)); }
+
+std::string binary_ply_points(const Points& s)
+{
+  std::string text = "ply\nformat binary_little_endian 1.0\n" + ply_point_properties(s, "double") + "end_header\n";
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    std::vector<double> values(s.points[i].begin(), s.points[i].end());
+    if (!s.normals.empty())
+      values.insert(values.end(), s.normals[i].begin(), s.normals[i].end());
+    text.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(double));
+  }
+  return text;
+}
+
+std::string off_points(const Points& s)
+{
+  Points plain{s.points, {}};
+  return "OFF\n" + std::to_string(s.points.size()) + " 0 0\n" + xyz(plain);
+}
+
+Points without_normals(const Points& s) { return Points{s.points, {}}; }
+
+const Vec3 sphere_center = {1, -2, 0.5};
+constexpr double sphere_radius = 2;
+
+// Every format gives the same points: the rows of the files without normals are
+// equal to the last bit, and so are those of the files with normals; on the sphere
+// H is 1/r (the outward normals of the file, or the propagation's, outward on a
+// closed surface), and the normal column is the outward normal, row by row in the
+// file's order.
+TEST_F(ToolTest, PointSetFormatsGiveTheSameRows)
+{
+  const Points s = sphere_points(2000, sphere_radius, sphere_center);
+  const Points plain = without_normals(s);
+  const std::vector<std::pair<std::string, std::string>> without = {
+    {"three_columns.xyz", xyz(plain)},
+    {"counted.xyz", xyz(plain, "# a comment, then the count\n2000\n")},
+    {"ascii.ply", ascii_ply_points(plain)},
+    {"binary.ply", binary_ply_points(plain)},
+    {"faceless.off", off_points(s)},
+    {"zero_faces.ply", ascii_ply(ply_point_properties(plain, "float") + ply_face_element(0), xyz(plain))}};
+  const std::vector<std::pair<std::string, std::string>> with = {{"six_columns.xyz", xyz(s)},
+                                                                 {"points.pwn", xyz(s)},
+                                                                 {"normals_ascii.ply", ascii_ply_points(s)},
+                                                                 {"normals_binary.ply", binary_ply_points(s)}};
+  for (const auto* files : {&without, &with}) {
+    std::vector<Row> first;
+    for (const auto& [name, text] : *files) {
+      const std::vector<Row> rows = csv(file(name, text), {}, point_set_csv_header);
+      ASSERT_EQ(rows.size(), s.points.size()) << name;
+      if (first.empty())
+        first = rows;
+      std::size_t beyond_one_percent = 0;
+      for (std::size_t i = 0; i < rows.size(); ++i) {
+        EXPECT_EQ(rows[i].values, first[i].values) << name << ", row " << i;
+        EXPECT_EQ(rows[i].status, first[i].status) << name << ", row " << i;
+        ASSERT_NE(rows[i].status, "failed") << name << ", row " << i;
+        EXPECT_NEAR(rows[i].values[2], 1 / sphere_radius, 0.05 / sphere_radius) << name << ", row " << i;
+        double along = 0;
+        for (int c = 0; c < 3; ++c)
+          along += rows[i].values[10 + c] * s.normals[i][c];
+        EXPECT_GT(along, 0.99) << name << ", row " << i;
+        beyond_one_percent += std::abs(rows[i].values[2] * sphere_radius - 1) > 0.01;
+      }
+      std::cout << name << ": " << beyond_one_percent << " of " << rows.size()
+                << " rows with H off 1/r by more than 1%\n";
+    }
+  }
+}
+
+// Given normals orient the result: inward normals give H = -1/r.
+TEST_F(ToolTest, PointSetGivenNormalsSetTheSign)
+{
+  Points s = sphere_points(2000, sphere_radius, sphere_center);
+  for (Vec3& n : s.normals)
+    for (double& c : n)
+      c = -c;
+  const std::vector<Row> rows = csv(file("inward.pwn", xyz(s)), {}, point_set_csv_header);
+  ASSERT_EQ(rows.size(), s.points.size());
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    EXPECT_NEAR(rows[i].values[2], -1 / sphere_radius, 0.05 / sphere_radius) << i;
+}
+
+// Rows follow the file's order: the points in another order give the same rows in that order.
+TEST_F(ToolTest, PointSetRowsFollowTheFileOrder)
+{
+  const Points s = without_normals(sphere_points(500, sphere_radius, sphere_center));
+  Points shuffled = s;
+  std::vector<std::size_t> order(s.points.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::shuffle(order.begin(), order.end(), std::mt19937(7));
+  for (std::size_t i = 0; i < order.size(); ++i)
+    shuffled.points[i] = s.points[order[i]];
+  const std::vector<Row> a = csv(file("a.xyz", xyz(s)), {}, point_set_csv_header);
+  const std::vector<Row> b = csv(file("b.xyz", xyz(shuffled)), {}, point_set_csv_header);
+  ASSERT_EQ(a.size(), s.points.size());
+  ASSERT_EQ(b.size(), s.points.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    for (std::size_t c = 0; c < a[0].values.size(); ++c)
+      EXPECT_NEAR(b[i].values[c], a[order[i]].values[c], 1e-9) << "row " << i << ", column " << c;
+}
+
+// Few points: rows of failed, nan values; the CSV still has a row per point.
+TEST_F(ToolTest, PointSetTooSmallToFitIsFailedRows)
+{
+  const std::vector<Row> rows = csv(file("three.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n"), {}, point_set_csv_header);
+  ASSERT_EQ(rows.size(), 3u);
+  for (const Row& r : rows)
+    EXPECT_EQ(r.status, "failed");
+  expect_consistent(rows, "three points");
+}
+
+// The PLY output: the points, the CSV's values and normals, a status and colours; no faces.
+TEST_F(ToolTest, PointSetPlyOutput)
+{
+  const Points s = without_normals(sphere_points(300, sphere_radius, sphere_center));
+  const fs::path p = file("sphere.xyz", xyz(s));
+  const fs::path output = dir / "out.ply";
+  const Result r = run({"-o", output.string(), p.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string text = read_text(output);
+  const std::size_t end = text.find("end_header\n");
+  ASSERT_NE(end, std::string::npos);
+  const std::string header = text.substr(0, end);
+  EXPECT_EQ(header.find("element face"), std::string::npos) << header;
+  EXPECT_NE(header.find("element vertex 300\n"), std::string::npos) << header;
+  const std::vector<std::string> names = {"x",        "y",       "z",       "k_max",   "k_min",   "mean",
+                                          "gaussian", "d_max_x", "d_max_y", "d_max_z", "d_min_x", "d_min_y",
+                                          "d_min_z",  "nx",      "ny",      "nz"};
+  std::string properties;
+  for (const std::string& name : names)
+    properties += "property double " + name + "\n";
+  properties += "property uchar status\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n";
+  EXPECT_NE(header.find(properties), std::string::npos) << header;
+  const std::size_t record = names.size() * sizeof(double) + 4;
+  ASSERT_EQ(text.size(), end + 11 + s.points.size() * record);
+  const std::vector<Row> rows = csv(p, {}, point_set_csv_header);
+  ASSERT_EQ(rows.size(), s.points.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    std::vector<double> values(names.size());
+    std::memcpy(values.data(), text.data() + end + 11 + i * record, names.size() * sizeof(double));
+    for (int c = 0; c < 3; ++c)
+      EXPECT_EQ(values[std::size_t(c)], s.points[i][std::size_t(c)]) << i;
+    for (std::size_t c = 0; c < rows[i].values.size(); ++c)
+      EXPECT_EQ(values[3 + c], rows[i].values[c]) << "row " << i << ", column " << c;
+    const std::map<std::string, int> codes = {{"ok", 0}, {"widened", 1}, {"failed", 2}, {"fallback", 3}};
+    EXPECT_EQ(int(text[end + 11 + i * record + names.size() * sizeof(double)]), codes.at(rows[i].status)) << i;
+  }
+}
+
+// The summary: the neighborhood, and how the normals were oriented.
+TEST_F(ToolTest, PointSetSummary)
+{
+  const Points one = sphere_points(400, sphere_radius, sphere_center);
+  const Result given = run({file("given.pwn", xyz(one)).string()});
+  ASSERT_EQ(given.exit_code, 0) << given.err;
+  for (const char* s : {"points: 400 with normals", "neighbors: the 16 nearest points", "normals: the file's",
+                        "time:", "mean curvature H: min", "ok: "})
+    EXPECT_NE(given.out.find(s), std::string::npos) << s << " in\n" << given.out;
+  // Two spheres far apart: two components of the propagation, each oriented on its own.
+  Points two = without_normals(one);
+  const Points other = sphere_points(400, 1, {20, 0, 0});
+  two.points.insert(two.points.end(), other.points.begin(), other.points.end());
+  const Result fitted = run({"--neighbors", "24", "--fit-degree", "3", file("two.xyz", xyz(two)).string()});
+  ASSERT_EQ(fitted.exit_code, 0) << fitted.err;
+  for (const char* s : {"points: 800\n", "method: point-set fit of degree 3", "neighbors: the 24 nearest points",
+                        "spanning-tree propagation: 2 components", "orientation confidence below 0.1"})
+    EXPECT_NE(fitted.out.find(s), std::string::npos) << s << " in\n" << fitted.out;
+  // Normals all zero (placeholders) are ignored, and the summary says so.
+  Points zero = one;
+  for (Vec3& n : zero.normals)
+    n = {0, 0, 0};
+  const Result zeros = run({file("zero.xyz", xyz(zero)).string()});
+  ASSERT_EQ(zeros.exit_code, 0) << zeros.err;
+  EXPECT_NE(zeros.out.find("normals: the file's are all zero, ignored; fitted"), std::string::npos) << zeros.out;
+}
+
+// --radius Nx is N mean distances to the nearest neighbor (computed here by brute force).
+TEST_F(ToolTest, PointSetRadiusInMeanSpacings)
+{
+  const Points s = without_normals(sphere_points(600, sphere_radius, sphere_center));
+  double sum = 0;
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < s.points.size(); ++j)
+      if (j != i) {
+        double d2 = 0;
+        for (int c = 0; c < 3; ++c)
+          d2 += (s.points[i][c] - s.points[j][c]) * (s.points[i][c] - s.points[j][c]);
+        nearest = std::min(nearest, std::sqrt(d2));
+      }
+    sum += nearest;
+  }
+  const double spacing = sum / double(s.points.size());
+  const fs::path p = file("sphere.xyz", xyz(s));
+  const Result r = run({"--radius", "3x", p.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string key = "neighbors: the points within ";
+  const std::size_t at = r.out.find(key);
+  ASSERT_NE(at, std::string::npos) << r.out;
+  char* end = nullptr;
+  const double radius = std::strtod(r.out.c_str() + at + key.size(), &end);
+  EXPECT_NEAR(radius, 3 * spacing, 1e-5 * spacing) << r.out;
+  EXPECT_EQ(std::string(end, 4), " (3 ") << r.out;
+  EXPECT_NE(r.out.find("mean distances to the nearest neighbor"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("points in a ball"), std::string::npos) << r.out;
+  const std::vector<Row> rows = csv(p, {"--radius", "3x"}, point_set_csv_header);
+  ASSERT_EQ(rows.size(), s.points.size());
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    EXPECT_NEAR(rows[i].values[2], 1 / sphere_radius, 0.05 / sphere_radius) << i;
+}
+
+TEST_F(ToolTest, PointSetOptionsThatDoNotApply)
+{
+  const Points s = without_normals(sphere_points(100, 1, {0, 0, 0}));
+  const std::string p = file("points.xyz", xyz(s)).string();
+  const std::string ply = file("points.ply", ascii_ply_points(s)).string();
+  for (const std::string& input : {p, ply}) {
+    expect_rejected({"-m", "taubin", input}, "taubin on a point set");
+    expect_rejected({"--rings", "2", input}, "--rings on a point set");
+    expect_rejected({"--neighbors", "8", "--radius", "1", input}, "--neighbors with --radius");
+    expect_rejected({"--degree", "3", input}, "--degree on a point set");
+  }
+  for (const std::string bad : {"2", "0", "-5", "abc", "10001"})
+    expect_rejected({"--neighbors", bad, p}, "--neighbors " + bad);
+  expect_rejected({"--neighbors", "8", file("tet.off", off(tetrahedron())).string()}, "--neighbors on a mesh");
+  expect_rejected({"--neighbors", "8", file("tet.obj", obj(tetrahedron())).string()}, "--neighbors on an OBJ");
+}
+
+TEST_F(ToolTest, PointSetBadInput)
+{
+  const Points s = sphere_points(20, 1, {0, 0, 0});
+  const std::string six = xyz(s), three = xyz(without_normals(s));
+  const std::vector<std::pair<std::string, std::string>> bad = {
+    {"empty.xyz", ""},
+    {"comments_only.xyz", "# nothing\n\n"},
+    {"four_values.xyz", "0 0 0 1\n" + three},
+    {"seven_values.xyz", "0 0 0 1 0 0 5\n"},
+    {"mixed_widths.xyz", three + six},
+    {"word.xyz", three + "0 zero 0\n"},
+    {"nan.xyz", three + "0 nan 0\n"},
+    {"inf.xyz", "inf 0 0\n" + three},
+    {"overflow.xyz", three + "1e400 0 0\n"},
+    {"nan_normal.xyz", six + "0 0 0 nan 0 1\n"},
+    {"truncated_line.xyz", three + "0 0\n"},
+    {"count_too_large.xyz", "21\n" + three},
+    {"count_too_small.xyz", "19\n" + three},
+    {"huge_count.xyz", "2000000000\n" + three},
+    {"negative_count.xyz", "-20\n" + three},
+    {"three_columns.pwn", three},
+    {"truncated.pwn", six.substr(0, six.rfind(' '))},
+    {"empty.pwn", ""},
+    {"garbage.pwn", "this is not a point set\n\x01\x02\xff\n"},
+    {"truncated.ply", ascii_ply(ply_point_properties(without_normals(s), "float"), three.substr(0, three.size() / 2))},
+    {"truncated_binary.ply", binary_ply_points(s).substr(0, binary_ply_points(s).size() - 20)},
+    {"huge_count.ply",
+     ascii_ply("element vertex 2000000000\nproperty float x\nproperty float y\nproperty float z\n", three)},
+    {"no_points.ply", ascii_ply(ply_point_properties(Points{}, "float"))},
+    {"nan.ply", ascii_ply(ply_point_properties(without_normals(s), "float"), "nan 0 0\n" + three)},
+    {"truncated.off", "OFF\n21 0 0\n" + three},
+    {"nan.off", "OFF\n21 0 0\n" + three + "0 nan 0\n"},
+    {"no_points.off", "OFF\n0 0 0\n"},
+  };
+  for (const auto& [name, text] : bad)
+    expect_rejected({file(name, text).string()}, name);
+  // Non-finite values in a binary PLY reach the tool's own check, which names them.
+  Points with_nan = s;
+  with_nan.normals[3][1] = std::numeric_limits<double>::quiet_NaN();
+  const fs::path p = file("nan_normal.ply", binary_ply_points(with_nan));
+  expect_rejected({p.string()}, "binary PLY with a NaN normal");
+  EXPECT_NE(run({p.string()}).err.find("non-finite"), std::string::npos);
 }
 
 } // namespace

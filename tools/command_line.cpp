@@ -34,12 +34,16 @@ const Integer_option integer_options[] = {
   {"--fit-degree", "D", Setting::fit_degree, &Options::fit_degree,
    "degree of the paraboloid method's fit: 2 is\nHamann's paraboloid; 3 and 4 are Taylor fits over 2 and 3 rings, of "
    "orders\n"
-   "2 and 3 on irregular meshes; .mesh input: 2..3",
+   "2 and 3 on irregular meshes; .mesh input: 2..3; point sets: the degree of\n"
+   "the fit over the neighbors",
    " (--degree is the jet's)"},
   {"--degree", "D", Setting::jet_degree, &Options::degree, "degree of the jet", ""},
   {"--monge-degree", "D", Setting::monge_degree, &Options::monge_degree, "degree of the Monge form, at most --degree",
    ""},
 };
+
+// The range of --neighbors.
+constexpr int min_neighbors = 3, max_neighbors = 10000;
 
 // "a, b and c" (or "a, b or c" with `last` " or ").
 std::string join(const std::vector<std::string>& words, const char* last)
@@ -105,8 +109,9 @@ std::string applies_to(Setting setting)
 void print_usage(std::ostream& out)
 {
   out << "usage: curvature [options] INPUT\n"
-         "Estimates curvature at the vertices of a surface mesh (INPUT: .off .ply .obj .stl), or of the\n"
-         "graph W = f(x, y, z) of a scalar field over a tetrahedral mesh (INPUT: Medit .mesh, f from .sol).\n"
+         "Estimates curvature at the vertices of a surface mesh (INPUT: .off .ply .obj .stl), at the points\n"
+         "of a point set (INPUT: .xyz .pwn, or .ply .off without faces), or of the graph W = f(x, y, z) of\n"
+         "a scalar field over a tetrahedral mesh (INPUT: Medit .mesh, f from .sol).\n"
          "\n"
          "options:\n";
   std::string method_list;
@@ -114,8 +119,10 @@ void print_usage(std::ostream& out)
     method_list +=
       std::string(method_list.empty() ? "" : " | ") + m.name + (&m == &methods().front() ? " (default)" : "");
   print_option(out, "-m, --method M",
-               method_list + "\n(.mesh input: " + join(tetrahedral_methods(), " or ") + " only)");
-  print_option(out, "-o, --output FILE", "FILE.csv or FILE.ply (surfaces only); without it, print a summary only");
+               method_list + "\n(.mesh input: " + join(tetrahedral_methods(), " or ") +
+                 " only; point sets: the default only, which runs the point-set fit)");
+  print_option(out, "-o, --output FILE",
+               "FILE.csv or FILE.ply (not for .mesh input); without it, print a summary only");
   for (const Integer_option& option : integer_options) {
     const Integer_range r = integer_range(option.setting);
     print_option(out, std::string("    ") + option.flag + " " + option.value_name,
@@ -127,7 +134,9 @@ void print_usage(std::ostream& out)
                "mesh joined to it by edges inside the ball): R in mesh units, or Nx for N\n"
                "mean edge lengths of INPUT (as in 4x); the ball grows where the fit needs\n"
                "more vertices (status widened); on .mesh input the ball and the edges are in\n"
-               "R^4, of the points (x, y, z, f); not with --rings\n" +
+               "R^4, of the points (x, y, z, f); not with --rings. On a point set, the points\n"
+               "within R (neighbor_radius), Nx for N mean distances to the nearest neighbor;\n"
+               "not with --neighbors\n" +
                  applies_to(Setting::ball_radius));
   print_option(out, "    --radius auto[:A:B]",
                "choose the ball's radius per vertex between A and B (R or Nx each;\n"
@@ -136,6 +145,10 @@ void print_usage(std::ostream& out)
                "and the PLY gain the radius and the noise per vertex; not with --rings\n"
                "(" +
                  join(readers(Setting::ball_radius_range), ", ") + "; surfaces only)");
+  print_option(out, "    --neighbors K",
+               std::to_string(min_neighbors) + ".." + std::to_string(max_neighbors) +
+                 " (default 16, 32 or 64 at --fit-degree 2, 3 or 4): point sets only:\n"
+                 "the fit's K nearest points (number_of_neighbors)");
   out << "      --scalars FILE the Medit .sol holding f for a .mesh INPUT (default: INPUT with the\n"
          "                     extension .sol, which must exist)\n"
          "      --threads N    1: sequential; N > 1: at most N threads; 0: all cores (default 0)\n"
@@ -161,7 +174,14 @@ void print_usage(std::ostream& out)
          "the normal, so a convex f has negative curvatures), by paraboloid fitting over the tetrahedral platelet.\n"
          "CSV only: header k_1,k_2,k_3,mean,gaussian,status (k_1 >= k_2 >= k_3, mean = their average,\n"
          "gaussian = their product), one row per vertex of the .mesh in its order; a vertex in no\n"
-         "tetrahedron is failed.\n";
+         "tetrahedron is failed.\n"
+         "\n"
+         "Point sets. .xyz holds x y z or x y z nx ny nz a line, .pwn x y z nx ny nz; a PLY whose\n"
+         "header declares no faces (normals from nx, ny, nz) and an OFF of 0 faces are point sets\n"
+         "too. Normals of the file orient the result (all zero: ignored); without, the fitted\n"
+         "normals are oriented by a spanning-tree propagation, which the summary describes. CSV:\n"
+         "the surface header with nx,ny,nz (the unit normal the signs refer to) before status,\n"
+         "one row per point in the file's order. PLY: the points with these values, no faces.\n";
 }
 
 // Fails unless the method of `o` reads `setting`, which `flag` set.
@@ -241,12 +261,26 @@ void check_options(const Options& o)
   } else if (!o.scalars.empty()) {
     fail("--scalars applies to tetrahedral input (.mesh) only", 2);
   }
+  if (o.point_set) {
+    if (o.method != &methods().front())
+      fail(std::string("method '") + o.method->name + "' needs a mesh: point sets take the default method (" +
+             methods().front().name + "), which runs the point-set fit",
+           2);
+    if (o.rings)
+      fail("--rings applies to meshes: on a point set give --neighbors K or --radius R", 2);
+    if (o.neighbors && o.radius)
+      fail("--neighbors and --radius exclude each other: a neighborhood is the K nearest points or a ball", 2);
+  } else if (o.neighbors && lower_extension(o.input) != ".ply" && lower_extension(o.input) != ".off") {
+    fail("--neighbors applies to point sets only (.xyz, .pwn, and .ply or .off without faces)", 2);
+  }
   if (o.radius)
     check_read(o, "--radius", Setting::ball_radius, "");
   if (o.radius_range) {
     check_read(o, "--radius auto", Setting::ball_radius_range, "");
     if (o.tetrahedral)
       fail("--radius auto is for surfaces: give tetrahedral input (.mesh) a radius", 2);
+    if (o.point_set)
+      fail("--radius auto is for meshes: give a point set --neighbors K or --radius R", 2);
   }
   if ((o.radius || o.radius_range) && o.rings)
     fail("--radius and --rings exclude each other: a neighborhood is a ball or rings", 2);
@@ -286,6 +320,8 @@ std::optional<Options> parse_arguments(int argc, char** argv)
       }
     } else if (arg == "-o" || arg == "--output") {
       o.output = value(arg);
+    } else if (arg == "--neighbors") {
+      o.neighbors = parse_int(arg, value(arg), min_neighbors, max_neighbors);
     } else if (arg == "--radius") {
       const std::string text = value(arg);
       o.radius.reset();
@@ -323,8 +359,17 @@ std::optional<Options> parse_arguments(int argc, char** argv)
   o.input = positional[0];
 
   o.tetrahedral = lower_extension(o.input) == ".mesh";
+  o.point_set = lower_extension(o.input) == ".xyz" || lower_extension(o.input) == ".pwn";
   check_options(o);
   return o;
+}
+
+void read_as(Options& o, bool point_set)
+{
+  o.point_set = point_set;
+  if (!point_set && o.neighbors)
+    fail("--neighbors applies to point sets only, and '" + o.input + "' is a mesh (it has faces)", 2);
+  check_options(o);
 }
 
 const char* quantity_name(Quantity q)

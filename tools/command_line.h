@@ -47,16 +47,23 @@ struct Options
   std::optional<int> order;                // extrapolation_order
   std::optional<int> fit_degree;           // fit_degree
   std::optional<int> degree, monge_degree; // jet_degree, monge_degree
+  std::optional<int> neighbors;            // number_of_neighbors, for point sets
   std::string scalars;
   bool tetrahedral = false; // INPUT is a Medit .mesh
+  bool point_set = false;   // INPUT is a point set (.xyz, .pwn; a PLY or OFF once read: see read_as)
   int threads = 0;
   Quantity color_by = Quantity::mean;
 };
 
 // Fails (a Tool_error with code 2) where the options of `o` do not go together: a
 // setting its method does not read, --monge-degree above the jet degree, --radius with
-// --rings, and what tetrahedral input (o.tetrahedral) or the output's extension refuses.
+// --rings, and what tetrahedral input (o.tetrahedral), point sets (o.point_set) or the
+// output's extension refuses.
 void check_options(const Options& o);
+
+// Once INPUT is read (a PLY or OFF is a mesh or a point set): sets o.point_set and
+// checks the options for that kind of input, as check_options does.
+void read_as(Options& o, bool point_set);
 
 // --radius `text` (R, or Nx in mean edge lengths) of `option`: a positive finite number
 // (a Tool_error with code 2 otherwise).

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// curvature: estimates curvature at the vertices of a surface mesh file, or of
-// the graph W = f(x, y, z) of a scalar field over a tetrahedral mesh.
+// curvature: estimates curvature at the vertices of a surface mesh file, at the
+// points of a point set, or of the graph W = f(x, y, z) of a scalar field over a
+// tetrahedral mesh.
 //
 //   curvature [options] INPUT
 //     -m, --method  a method of the registry (registry.cpp; --help lists them)
@@ -13,10 +14,13 @@
 // become a mesh. Errors: one line on stderr, non-zero exit, no output file.
 //
 // main only: the parts are in this directory (command_line, surface_input,
-// soup_repair, registry, surface_estimation, tetrahedral, writers, atomic_file, summary).
+// soup_repair, registry, surface_estimation, point_set_input, point_set_estimation,
+// tetrahedral, writers, atomic_file, summary).
 #include "atomic_file.h"
 #include "command_line.h"
 #include "input_files.h"
+#include "point_set_estimation.h"
+#include "point_set_input.h"
 #include "soup_repair.h"
 #include "summary.h"
 #include "surface_estimation.h"
@@ -56,6 +60,22 @@ int run_surface(const Options& o)
   return 0;
 }
 
+int run_point_set(const Options& o, const Point_set_input& input)
+{
+  const Point_set_estimates estimates = estimate_point_set(o, input);
+  if (!o.output.empty()) {
+    Atomic_file out(o.output);
+    if (lower_extension(o.output) == ".csv")
+      write_point_set_csv(out, estimates);
+    else
+      write_point_set_ply(out, input.points, estimates, o.color_by);
+    out.commit();
+    return 0;
+  }
+  print_point_set_summary(o, input, estimates);
+  return 0;
+}
+
 int run_tetrahedral(const Options& o)
 {
   const Tetrahedral_input input = read_tetrahedral_input(o.input, o.scalars);
@@ -72,10 +92,14 @@ int run_tetrahedral(const Options& o)
 
 int run(int argc, char** argv)
 {
-  const std::optional<Options> parsed = parse_arguments(argc, argv);
+  std::optional<Options> parsed = parse_arguments(argc, argv);
   if (!parsed)
     return 0;
-  return parsed->tetrahedral ? run_tetrahedral(*parsed) : run_surface(*parsed);
+  if (parsed->tetrahedral)
+    return run_tetrahedral(*parsed);
+  const std::optional<Point_set_input> points = read_point_set_input(parsed->input);
+  read_as(*parsed, points.has_value());
+  return points ? run_point_set(*parsed, *points) : run_surface(*parsed);
 }
 
 } // namespace

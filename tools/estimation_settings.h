@@ -43,15 +43,16 @@ double timed_estimate(Estimate estimate)
 inline int rings(const Options& o) { return o.rings.value_or(1); }
 inline int max_rings(const Options& o) { return std::max(3, rings(o)); }
 
-// --radius in the input's units: R, or N times `mean_edge_length` for Nx. Fails
-// where that is no positive finite length (1e308x of a mesh whose edges are long).
-inline double ball_radius(const Radius& radius, double mean_edge_length)
+// --radius in the input's units: R, or N times `mean_edge_length` for Nx (`unit`
+// names it in the message). Fails where that is no positive finite length (1e308x
+// of a mesh whose edges are long).
+inline double ball_radius(const Radius& radius, double mean_edge_length,
+                          const char* unit = "the mean edge length of the mesh")
 {
   const double r = radius.in_mean_edges ? radius.value * mean_edge_length : radius.value;
   if (!(r > 0) || !std::isfinite(r)) {
     std::ostringstream message;
-    message << "--radius " << radius.value << "x is no positive finite length: the mean edge length of the mesh is "
-            << mean_edge_length;
+    message << "--radius " << radius.value << "x is no positive finite length: " << unit << " is " << mean_edge_length;
     fail(message.str(), 2);
   }
   return r;

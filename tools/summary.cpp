@@ -89,7 +89,7 @@ void print_radius_selection(const Surface_estimates& rows)
 
 // The summary's lines after the input's: time, ranges of H and K, status counts.
 template <typename Rows>
-void print_estimates(const Rows& rows, std::size_t vertices, double seconds)
+void print_estimates(const Rows& rows, std::size_t vertices, double seconds, const char* item = "vertex")
 {
   std::size_t ok = 0, widened = 0, fallback = 0, failed = 0;
   std::vector<double> H, K;
@@ -114,7 +114,7 @@ void print_estimates(const Rows& rows, std::size_t vertices, double seconds)
   }
   std::cout << "time: " << seconds * 1e3 << " ms";
   if (vertices > 0)
-    std::cout << " (" << seconds * 1e9 / double(vertices) << " ns per vertex)";
+    std::cout << " (" << seconds * 1e9 / double(vertices) << " ns per " << item << ")";
   std::cout << '\n';
   print_range("mean curvature H", H);
   print_range("Gaussian curvature K", K);
@@ -149,6 +149,42 @@ void print_tetrahedral_summary(const Options& o, const Tetrahedral_input& input,
   if (estimates.ball_radius > 0)
     print_ball(estimates.ball_radius, estimates.mean_edge_length, estimates.ball_size, vertices);
   print_estimates(estimates.rows, vertices, estimates.seconds);
+}
+
+void print_point_set_summary(const Options& o, const Point_set_input& input, const Point_set_estimates& e)
+{
+  const std::size_t n = input.points.size();
+  std::cout << "input: " << o.input << '\n'
+            << "points: " << n << (e.given_normals ? " with normals" : "") << '\n'
+            << "method: point-set fit of degree " << o.fit_degree.value_or(2) << '\n';
+  if (e.radius > 0) {
+    std::ostringstream mean;
+    mean << std::fixed << std::setprecision(1) << e.ball_size.mean;
+    std::cout << "neighbors: the points within " << e.radius << " (" << e.radius / e.mean_spacing
+              << " mean distances to the nearest neighbor of " << e.mean_spacing << ")\n"
+              << "mean neighborhood: " << mean.str() << " points in a ball (the point included, before a fit widens it";
+    if (e.ball_size.sampled < n)
+      std::cout << "; over " << e.ball_size.sampled << " evenly spaced points";
+    std::cout << ")\n";
+  } else {
+    std::cout << "neighbors: the " << e.neighbors << " nearest points\n";
+  }
+  if (e.given_normals) {
+    std::cout << "normals: the file's, which orient the result\n";
+  } else {
+    std::size_t components = 0, doubtful = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (e.component[i] != std::size_t(-1)) {
+        components = std::max(components, e.component[i] + 1);
+        doubtful += e.confidence[i] < low_orientation_confidence;
+      }
+    std::cout << "normals: " << (input.zero_normals_ignored ? "the file's are all zero, ignored; " : "")
+              << "fitted, oriented by spanning-tree propagation: " << components << " component"
+              << (components == 1 ? "" : "s") << " (each oriented on its own), " << doubtful
+              << " points with orientation confidence below " << low_orientation_confidence
+              << " (where the sign may flip)\n";
+  }
+  print_estimates(e, n, e.seconds, "point");
 }
 
 } // namespace ce_tool

@@ -7,6 +7,8 @@
 #define CE_TOOLS_SUMMARY_H
 
 #include "command_line.h"
+#include "point_set_estimation.h"
+#include "point_set_input.h"
 #include "soup_repair.h"
 #include "surface_estimation.h"
 #include "surface_input.h"
@@ -17,6 +19,10 @@
 namespace ce_tool {
 
 void print_surface_summary(const Options& o, const Soup& soup, const Mesh& mesh, const Surface_estimates& rows);
+
+// With how the normals were oriented: given, or by the propagation (its components and
+// the points of low orientation confidence).
+void print_point_set_summary(const Options& o, const Point_set_input& input, const Point_set_estimates& e);
 
 void print_tetrahedral_summary(const Options& o, const Tetrahedral_input& input,
                                const Tetrahedral_estimates& estimates);

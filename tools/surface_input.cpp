@@ -18,8 +18,6 @@
 
 namespace ce_tool {
 
-namespace {
-
 // PLY headers that CGAL 5.5's reader does not survive, refused first:
 // - it sizes its arrays from the header's counts: a header declaring billions of
 //   elements in a small file would exhaust memory before the reader notices the
@@ -35,12 +33,14 @@ namespace {
 // The header is scanned as CGAL's reader scans it: the first two lines are the
 // signature and the format, whatever they hold (a second line "end_header ascii
 // 1.0" does not end the header), then keyword lines up to the keyword end_header.
-void check_ply_header(const std::string& path, std::uintmax_t bytes)
+Ply_header check_ply_header(const std::string& path, std::uintmax_t bytes)
 {
   std::ifstream in(path, std::ios::binary);
   long double vertices = 0, faces = 0;
   std::string line, element;
   bool element_seen = false;
+  Ply_header header;
+  int normal_coordinates = 0; // of nx, ny, nz declared float or double in the vertex element
   for (int number = 1; std::getline(in, line); ++number) {
     if (number <= 2)
       continue;
@@ -66,6 +66,8 @@ void check_ply_header(const std::string& path, std::uintmax_t bytes)
       if ((element == "vertex" || element == "vertices") && coordinate && !floating)
         fail("unsupported file '" + path + "': PLY vertex coordinate '" + name + "' of type '" + type +
              "' (float or double expected)");
+      if ((element == "vertex" || element == "vertices") && (name == "nx" || name == "ny" || name == "nz"))
+        normal_coordinates += floating ? 1 : 4; // any other type: no normals
     }
     if (keyword == "element") {
       element_seen = true;
@@ -80,21 +82,23 @@ void check_ply_header(const std::string& path, std::uintmax_t bytes)
           n = std::numeric_limits<unsigned long long>::max();
         element = name;
         (name == "vertex" ? vertices : faces) += static_cast<long double>(n);
+        header.faces = header.faces || ((name == "face" || name == "faces") && n > 0);
       }
     }
   }
   if (6 * vertices + 2 * faces > static_cast<long double>(bytes) + 64)
     fail("malformed file '" + path + "': its header declares more vertices or faces than the file (" +
          std::to_string(bytes) + " bytes) can hold");
+  header.normals = normal_coordinates == 3;
+  return header;
 }
-
-} // namespace
 
 Soup read_input(const std::string& path)
 {
   const std::string ext = lower_extension(path);
   if (ext != ".off" && ext != ".ply" && ext != ".obj" && ext != ".stl")
-    fail("unknown input extension '" + ext + "' of '" + path + "' (expected .off, .ply, .obj, .stl or .mesh)");
+    fail("unknown input extension '" + ext + "' of '" + path +
+         "' (expected .off, .ply, .obj, .stl, .xyz, .pwn or .mesh)");
 
   Soup soup;
   if (ext == ".off") {

@@ -7,6 +7,7 @@
 #include "kernel.h"
 #include "mesh_readers.h"
 
+#include <cstdint>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -27,6 +28,17 @@ struct Silence_cerr
   {}
   ~Silence_cerr() { std::cerr.rdbuf(saved); }
 };
+
+// What a PLY header declares, as check_ply_header reads it.
+struct Ply_header
+{
+  bool faces = false;   // a face element of one face or more: a mesh, else a point set
+  bool normals = false; // vertex properties nx, ny and nz, each float or double
+};
+
+// Refuses (a Tool_error) the PLY headers that CGAL's reader does not survive, and those
+// declaring more elements than the file's `bytes` can hold; then says what it declares.
+Ply_header check_ply_header(const std::string& path, std::uintmax_t bytes);
 
 // The soup of the file at `path`, in the file's order. OFF is read by the strict
 // reader of mesh_readers.h, PLY, OBJ and STL by CGAL after checks of what its

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <initializer_list>
 #include <limits>
 #include <tuple>
 
@@ -95,24 +96,93 @@ void put_binary(std::string& out, double x)
   put_le(out, bits);
 }
 
-// The rows of --radius auto: a Row's values, then the radius and the noise.
+// The PLY of `points` (`what` they are, in a comment), the rows' values() as vertex
+// properties named `names`, their status and colours of `q`, then `faces` if given.
+template <typename Rows>
+void write_ply_of(Atomic_file& file, const char* what, const std::vector<Point>& points, const Rows& rows, Quantity q,
+                  std::initializer_list<const char*> names, const Flat_polygons* faces)
+{
+  std::vector<double> magnitudes;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const Row r = rows[i];
+    if (r.status != CE::Estimation_status::not_estimable && std::isfinite(quantity(r, q)))
+      magnitudes.push_back(std::abs(quantity(r, q)));
+  }
+  double scale = 0;
+  if (!magnitudes.empty()) {
+    const std::size_t k = std::min(magnitudes.size() - 1, magnitudes.size() * 95 / 100);
+    std::nth_element(magnitudes.begin(), magnitudes.begin() + k, magnitudes.end());
+    scale = magnitudes[k];
+  }
+  magnitudes = std::vector<double>();
+
+  std::size_t face_count = 0;
+  for (std::size_t f = 0; faces && f < faces->size(); ++f) {
+    const std::size_t n = (*faces)[f].size();
+    if (n > 255)
+      fail("a face of the input has more than 255 vertices, which the PLY output does not support");
+    face_count += n >= 3;
+  }
+
+  std::string& out = file.text();
+  out += "ply\nformat binary_little_endian 1.0\n";
+  out += std::string("comment written by curvature: ") + what + ", in its order\n";
+  out += "comment status: 0 = ok, 1 = widened, 2 = failed (its curvature values are NaN), 3 = fallback\n";
+  out += std::string("comment colours: ") + quantity_name(q) +
+         ", blue < 0 < red, saturated at the 95th percentile of |value|; failed grey\n";
+  out += "element vertex " + std::to_string(points.size()) + "\n";
+  for (const char* coordinate : {"x", "y", "z"})
+    out += std::string("property double ") + coordinate + "\n";
+  for (const char* name : names)
+    out += std::string("property double ") + name + "\n";
+  out += "property uchar status\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n";
+  if (faces) {
+    out += "element face " + std::to_string(face_count) + "\n";
+    out += "property list uchar int vertex_indices\n";
+  }
+  out += "end_header\n";
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const Point& p = points[i];
+    const auto r = rows[i];
+    for (double x : {p.x(), p.y(), p.z()})
+      put_binary(out, x);
+    for (double x : r.values())
+      put_binary(out, x);
+    out += static_cast<char>(r.status);
+    for (unsigned char c : colour(quantity(r, q), scale))
+      out += static_cast<char>(c);
+    file.flush_if_full();
+  }
+  for (std::size_t f = 0; faces && f < faces->size(); ++f) {
+    const Flat_polygons::Polygon p = (*faces)[f];
+    if (p.size() < 3)
+      continue;
+    out += static_cast<char>(p.size());
+    for (std::size_t index : p) {
+      if (index > std::size_t(std::numeric_limits<std::int32_t>::max()))
+        fail("a vertex index does not fit the PLY output's int");
+      put_le(out, static_cast<std::uint32_t>(index));
+    }
+    file.flush_if_full();
+  }
+}
+
+// The rows of --radius auto: a Row (for the colours), with the radius and the noise after its values.
 struct Rows_with_radius
 {
   const Surface_estimates& rows;
 
-  struct Values
+  struct Values : Row
   {
     std::array<double, 12> all;
-    CE::Estimation_status status;
     const std::array<double, 12>& values() const { return all; }
   };
   std::size_t size() const { return rows.size(); }
   Values operator[](std::size_t i) const
   {
-    const Row r = rows[i];
-    const auto row = r.values();
+    Values v{rows[i], {}};
+    const auto row = v.Row::values();
     const auto radius_and_noise = rows.radius_and_noise(i);
-    Values v{{}, r.status};
     std::copy(row.begin(), row.end(), v.all.begin());
     std::copy(radius_and_noise.begin(), radius_and_noise.end(), v.all.begin() + row.size());
     return v;
@@ -137,71 +207,31 @@ void write_tetrahedral_csv(Atomic_file& out, const std::vector<Tetrahedral_row>&
 
 void write_ply(Atomic_file& file, const Soup& soup, const Surface_estimates& rows, Quantity q)
 {
-  std::vector<double> magnitudes;
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const Row r = rows[i];
-    if (r.status != CE::Estimation_status::not_estimable && std::isfinite(quantity(r, q)))
-      magnitudes.push_back(std::abs(quantity(r, q)));
-  }
-  double scale = 0;
-  if (!magnitudes.empty()) {
-    const std::size_t k = std::min(magnitudes.size() - 1, magnitudes.size() * 95 / 100);
-    std::nth_element(magnitudes.begin(), magnitudes.begin() + k, magnitudes.end());
-    scale = magnitudes[k];
-  }
-  magnitudes = std::vector<double>();
-
-  std::size_t faces = 0;
-  for (std::size_t f = 0; f < soup.faces.size(); ++f) {
-    const std::size_t n = soup.faces[f].size();
-    if (n > 255)
-      fail("a face of the input has more than 255 vertices, which the PLY output does not support");
-    faces += n >= 3;
-  }
-
-  std::string& out = file.text();
-  out += "ply\nformat binary_little_endian 1.0\n";
-  out += "comment written by curvature: the vertices and faces of the input file, in its order\n";
-  out += "comment status: 0 = ok, 1 = widened, 2 = failed (its curvature values are NaN), 3 = fallback\n";
-  out += std::string("comment colours: ") + quantity_name(q) +
-         ", blue < 0 < red, saturated at the 95th percentile of |value|; failed grey\n";
-  out += "element vertex " + std::to_string(soup.points.size()) + "\n";
-  for (const char* name : {"x", "y", "z", "k_max", "k_min", "mean", "gaussian", "d_max_x", "d_max_y", "d_max_z",
-                           "d_min_x", "d_min_y", "d_min_z"})
-    out += std::string("property double ") + name + "\n";
+  const char* what = "the vertices and faces of the input file";
   if (rows.radius_selection)
-    out += "property double radius\nproperty double noise\n";
-  out += "property uchar status\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n";
-  out += "element face " + std::to_string(faces) + "\n";
-  out += "property list uchar int vertex_indices\n";
-  out += "end_header\n";
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const Point& p = soup.points[i];
-    const Row r = rows[i];
-    for (double x : {p.x(), p.y(), p.z()})
-      put_binary(out, x);
-    for (double x : r.values())
-      put_binary(out, x);
-    if (rows.radius_selection)
-      for (double x : rows.radius_and_noise(i))
-        put_binary(out, x);
-    out += static_cast<char>(r.status);
-    for (unsigned char c : colour(quantity(r, q), scale))
-      out += static_cast<char>(c);
-    file.flush_if_full();
-  }
-  for (std::size_t f = 0; f < soup.faces.size(); ++f) {
-    const Flat_polygons::Polygon p = soup.faces[f];
-    if (p.size() < 3)
-      continue;
-    out += static_cast<char>(p.size());
-    for (std::size_t index : p) {
-      if (index > std::size_t(std::numeric_limits<std::int32_t>::max()))
-        fail("a vertex index does not fit the PLY output's int");
-      put_le(out, static_cast<std::uint32_t>(index));
-    }
-    file.flush_if_full();
-  }
+    write_ply_of(file, what, soup.points, Rows_with_radius{rows}, q,
+                 {"k_max", "k_min", "mean", "gaussian", "d_max_x", "d_max_y", "d_max_z", "d_min_x", "d_min_y",
+                  "d_min_z", "radius", "noise"},
+                 &soup.faces);
+  else
+    write_ply_of(
+      file, what, soup.points, rows, q,
+      {"k_max", "k_min", "mean", "gaussian", "d_max_x", "d_max_y", "d_max_z", "d_min_x", "d_min_y", "d_min_z"},
+      &soup.faces);
+}
+
+void write_point_set_csv(Atomic_file& out, const Point_set_estimates& rows)
+{
+  write_csv(out, "k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,nx,ny,nz,status", rows);
+}
+
+void write_point_set_ply(Atomic_file& file, const std::vector<Point>& points, const Point_set_estimates& rows,
+                         Quantity q)
+{
+  write_ply_of(file, "the points of the input file, without faces", points, rows, q,
+               {"k_max", "k_min", "mean", "gaussian", "d_max_x", "d_max_y", "d_max_z", "d_min_x", "d_min_y", "d_min_z",
+                "nx", "ny", "nz"},
+               nullptr);
 }
 
 } // namespace ce_tool
