@@ -27,6 +27,9 @@ PACKAGES=(
   # environment of /usr/bin/python3; pkg-config finds Eigen and TBB) and its tests (pytest).
   python3 python3-dev python3-numpy python3-pybind11 pybind11-dev python3-pytest python3-venv python3-setuptools
   python3-wheel pkg-config
+  # Tiles on Dask (python/curvature_estimation/tiles.py): the distributed scheduler, whose
+  # LocalCluster of worker processes on localhost runs the tests of the tiled runs.
+  python3-dask python3-distributed
 )
 if [ "${1:-}" = "--report" ]; then
   # Plots and headless renders of benchmark/REPORT.md (/usr/bin/python3's matplotlib, Agg backend).
