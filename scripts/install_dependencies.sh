@@ -28,6 +28,9 @@ PACKAGES=(
   # of benchmark/REPORT.md.
   python3 python3-dev python3-numpy python3-pybind11 pybind11-dev python3-pytest python3-venv python3-setuptools
   python3-wheel pkg-config python3-matplotlib
+  # Tiles on Dask (python/curvature_estimation/tiles.py): the distributed scheduler, whose
+  # LocalCluster of worker processes on localhost runs the tests of the tiled runs.
+  python3-dask python3-distributed
 )
 if [ "${1:-}" = "--report" ]; then
   # /usr/bin/time: wall time and peak memory of benchmark/tool_end_to_end.sh and

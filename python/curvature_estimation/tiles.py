@@ -1,0 +1,483 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Tiles with halos: a surface mesh cut into tiles on a grid in x and y, each tile run
+on its own (serially or on Dask, one task per tile), the results stitched by global
+index into what mesh_curvatures gives on the whole mesh, bit for bit.
+
+A tile holds the vertices it owns (those in its cell of the grid), a halo around them
+(the vertices within `Halo.distance` in x and y of its cell, then `Halo.rings` rings of
+faces more) and the faces touching all but its last ring: its vertices keep their global
+relative order and its faces theirs, so that the mesh built from a tile walks around a
+vertex whose faces are all in the tile as the whole mesh's does (see the manual). After
+a run each owned vertex is checked against the tile's incomplete vertices (those missing
+some of their faces): where its neighborhood, by its method, settings and status, could
+have reached one, the tile is cut again with a wider halo and run again.
+"""
+
+import math
+import sys
+import time
+from typing import NamedTuple
+
+import numpy as np
+
+from . import MeshCurvatures, Status, mesh_curvatures
+
+__all__ = ["Halo", "Tile", "TiledRun", "cut_tiles", "halo_of", "mean_edge_length", "recut", "run_tile", "run_tiles"]
+
+# The library's widening and fallback constants the halo is derived from
+# (include/CGAL/Curvature_estimation/internal/fit_attempts.h, ball.h, registry.cpp).
+_GAUSS_MAP_RINGS = 2      # the Gauss map's least squares over the 2-ring of vertex normals
+_CUBIC_MIN_RINGS = 3      # cubic_min_rings: the boundary normal's cubic fit
+_JET_EXTRA_RINGS = 3      # the tool's max rings of jet fitting: rings + 3
+_BALL_GROWTH_FOR_CONDITIONING = 2.0  # ball_growth_for_conditioning
+
+
+class Halo(NamedTuple):
+    """How far a tile reaches beyond the vertices it owns: `distance` in x and y (for
+    balls), then `rings` rings of faces (at least 1: the owned vertices' own faces)."""
+
+    rings: int
+    distance: float = 0.0
+
+    def wider(self, needed):
+        """The halo a tile that failed its check is cut again with: one ring more and a
+        distance 1.25 times this one's (a ball's growth), at least `needed`."""
+        return Halo(max(self.rings + 1, needed.rings), max(self.distance * 1.25, needed.distance))
+
+
+def _max_rings(rings):
+    # The tool's max_neighborhood_rings: max(3, rings) (tools/estimation_settings.h).
+    return max(3, rings)
+
+
+def _paraboloid_rings(rings, fit_degree):
+    """The rings the paraboloid estimator reads at a vertex with its fitted normal, its
+    fits of fit_degree widened as far as fit_attempts.h lets them, and its fallbacks
+    (the plane-frame fit over the same rings, the Gauss map over the 2-ring of normals)."""
+    widest = _max_rings(rings)
+    normal = max(widest, _CUBIC_MIN_RINGS)
+    if fit_degree > 2:  # degree_attempts: up to max_rings or one ring past degree - 1
+        widest = max(widest, max(rings, fit_degree - 1) + 1)
+    return max(widest, normal, _GAUSS_MAP_RINGS + normal)
+
+
+def halo_of(method="paraboloid", *, rings=None, radius=None, order=None, fit_degree=None, degree=None,
+            monge_degree=None):
+    """The halo a method with the settings of mesh_curvatures reads at a vertex, with its
+    normals and its fallbacks: rings for ring fits, a distance (radius absolute, in mesh
+    units) for balls before they grow. Ring halos bound every status; a ball that grew
+    (status widened) is checked at run time (see check_tile)."""
+    if isinstance(radius, str):
+        raise ValueError("halo_of takes an absolute radius: convert 'Nx' with mean_edge_length first")
+    r = rings or 1
+    normal = _max_rings(r)  # the default normal's fit (quadric_fit) over max_rings at most
+    default_paraboloid = _paraboloid_rings(1, 2)
+    if method == "paraboloid":
+        if radius is not None:
+            # The normal's ball and the curvature's ball about the vertex, and the Gauss
+            # map's fallback over the ball of normals, each normal from its own ball.
+            return Halo(1, 2.0 * radius)
+        return Halo(_paraboloid_rings(r, fit_degree or 2))
+    if method == "gauss-map":
+        if radius is not None:
+            return Halo(1, 2.0 * radius)
+        return Halo(_GAUSS_MAP_RINGS + normal)
+    if method in ("taubin", "chen-schmitt"):
+        # Normal curvatures towards the rings' vertices, with the vertex's normal alone.
+        return Halo(max(r, _GAUSS_MAP_RINGS if method == "chen-schmitt" else 1, normal))
+    if method == "curve-network":
+        # Mesh lines of `order` edges each way; the paraboloid fit with its defaults as fallback.
+        return Halo(max(order or 1, default_paraboloid))
+    if method == "jet":
+        # CGAL's fit widened to rings + 3; the paraboloid fit with its defaults as fallback.
+        fallback = Halo(default_paraboloid)
+        if radius is not None:
+            return Halo(fallback.rings, radius)
+        return Halo(max(r + _JET_EXTRA_RINGS, fallback.rings))
+    raise ValueError(f"unknown method {method!r}")
+
+
+def mean_edge_length(vertices, faces):
+    """The mean edge length of the mesh of (vertices, faces) as the library computes it
+    for radius "Nx" (mean_edge_length.h), bit for bit: the edges in the order the faces
+    first meet them, each |source - target| as Eigen's norm sums it, summed in that order."""
+    vertices = np.asarray(vertices, dtype=np.float64)
+    faces = np.asarray(faces)
+    source = faces.ravel()
+    target = np.roll(faces, -1, axis=1).ravel()
+    n = np.int64(len(vertices))
+    key = np.minimum(source, target).astype(np.int64) * n + np.maximum(source, target)
+    _, first = np.unique(key, return_index=True)
+    first.sort()
+    d = vertices[source[first]] - vertices[target[first]]
+    # Eigen's norm of a Vector3d at -O3: (x^2 + y^2) + z^2 (checked on 1e6 random vectors;
+    # x^2 + (y^2 + z^2) differs in 12% of them).
+    length = np.sqrt((d[:, 0] * d[:, 0] + d[:, 1] * d[:, 1]) + d[:, 2] * d[:, 2])
+    length = length[np.isfinite(length)]
+    return float(np.cumsum(length)[-1] / len(length)) if len(length) else 0.0  # cumsum: in order
+
+
+class Tile(NamedTuple):
+    """One tile: `vertices` the global indices of its vertices (ascending), `faces` its
+    faces in local indices (in global order), `owned` and `complete` per local vertex
+    (complete: every face of the vertex is in the tile); `cell` its (i, j) in the grid,
+    `box` the cell's (x0, x1, y0, y1), `halo` the halo it was cut with."""
+
+    cell: tuple
+    box: tuple
+    halo: Halo
+    vertices: np.ndarray
+    faces: np.ndarray
+    owned: np.ndarray
+    complete: np.ndarray
+
+
+def _cells(xy, tiles):
+    lo, hi = xy.min(axis=0), xy.max(axis=0)
+    size = np.where(hi > lo, hi - lo, 1.0)
+    cell = np.floor((xy - lo) / size * np.array(tiles)).astype(np.int64)
+    return np.minimum(cell, np.array(tiles) - 1), lo, size
+
+
+def _box(cell, tiles, lo, size):
+    (i, j), (nx, ny) = cell, tiles
+    # Outer sides at infinity: no vertex lies beyond them.
+    x0 = lo[0] + size[0] * i / nx if i > 0 else -math.inf
+    x1 = lo[0] + size[0] * (i + 1) / nx if i < nx - 1 else math.inf
+    y0 = lo[1] + size[1] * j / ny if j > 0 else -math.inf
+    y1 = lo[1] + size[1] * (j + 1) / ny if j < ny - 1 else math.inf
+    return (x0, x1, y0, y1)
+
+
+def _cut(vertices, faces, degree, cell, box, owned_global, halo):
+    core = owned_global.copy()
+    if halo.distance > 0:
+        x0, x1, y0, y1 = box
+        x, y, d = vertices[:, 0], vertices[:, 1], halo.distance
+        core |= (x >= x0 - d) & (x <= x1 + d) & (y >= y0 - d) & (y <= y1 + d)
+    inside = core
+    for _ in range(halo.rings):
+        touching = inside[faces].any(axis=1)
+        inside = inside.copy()
+        inside[faces[touching]] = True
+    global_index = np.flatnonzero(inside)
+    local = np.full(len(vertices), -1, dtype=np.int64)
+    local[global_index] = np.arange(len(global_index))
+    tile_faces = local[faces[touching]]
+    complete = np.bincount(tile_faces.ravel(), minlength=len(global_index)) == degree[global_index]
+    return Tile(cell, box, halo, global_index, tile_faces, owned_global[global_index], complete)
+
+
+def cut_tiles(vertices, faces, tiles=(3, 3), halo=Halo(1)):
+    """The tiles of the mesh (vertices (n, 3), faces (m, k)) on a grid of tiles[0] by
+    tiles[1] cells over the bounding box in x and y, each with `halo`; empty cells give
+    no tile."""
+    vertices = np.asarray(vertices, dtype=np.float64)
+    faces = np.asarray(faces, dtype=np.int64)
+    if halo.rings < 1:
+        raise ValueError("a halo has at least 1 ring (the owned vertices' faces)")
+    cell, lo, size = _cells(vertices[:, :2], tiles)
+    degree = np.bincount(faces.ravel(), minlength=len(vertices))
+    result = []
+    for i in range(tiles[0]):
+        for j in range(tiles[1]):
+            owned = (cell[:, 0] == i) & (cell[:, 1] == j)
+            if owned.any():
+                result.append(_cut(vertices, faces, degree, (i, j), _box((i, j), tiles, lo, size), owned, halo))
+    return result
+
+
+def recut(vertices, faces, tile, halo):
+    """`tile` cut again from the mesh with `halo`."""
+    vertices = np.asarray(vertices, dtype=np.float64)
+    faces = np.asarray(faces, dtype=np.int64)
+    owned = np.zeros(len(vertices), dtype=bool)
+    owned[tile.vertices[tile.owned]] = True
+    degree = np.bincount(faces.ravel(), minlength=len(vertices))
+    return _cut(vertices, faces, degree, tile.cell, tile.box, owned, halo)
+
+
+def _ring_distance(faces, start, limit):
+    """Per vertex, the rings of faces from the `start` vertices to it, up to `limit` (else limit)."""
+    distance = np.full(len(start), limit, dtype=np.int64)
+    reached = start.copy()
+    distance[reached] = 0
+    for step in range(1, limit):
+        touching = reached[faces].any(axis=1)
+        grown = reached.copy()
+        grown[faces[touching]] = True
+        distance[grown & ~reached] = step
+        reached = grown
+    return distance
+
+
+def _box_gap(points, box, halo):
+    """Per point, its distance in x and y to the edge of the tile's complete region (the
+    cell widened by halo.distance): no incomplete vertex is nearer, in 3D."""
+    x0, x1, y0, y1 = box
+    d = halo.distance
+    x, y = points[:, 0], points[:, 1]
+    return np.minimum(np.minimum(x - (x0 - d), (x1 + d) - x), np.minimum(y - (y0 - d), (y1 + d) - y))
+
+
+def check_tile(tile, points, status, needed):
+    """The owned vertices (local indices) whose neighborhood could have reached an
+    incomplete vertex of the tile: over rings, those fewer than needed.rings rings from
+    one (a bound for every status); over a ball, those nearer than needed.distance to one
+    in x and y, or than twice that where the status is not ok (ball_growth_for_conditioning).
+    Over a ball the check is not a proof: a ball grown for lack of vertices may reach
+    farther, and a status shows the growth of the vertex's own ball, not that of its
+    neighbors' normals (gauss-map); the module reports no reach per vertex."""
+    owned = np.flatnonzero(tile.owned)
+    if needed.distance > 0:
+        gap = _box_gap(points[owned], tile.box, tile.halo)
+        reach = np.where(status[owned] == Status.ok, needed.distance,
+                         _BALL_GROWTH_FOR_CONDITIONING * needed.distance)
+        suspect = gap < reach
+    else:
+        suspect = np.zeros(len(owned), dtype=bool)
+    rings = _ring_distance(tile.faces, ~tile.complete, needed.rings)
+    suspect |= rings[owned] < needed.rings
+    return owned[suspect]
+
+
+def run_tile(points, tile, method, settings, needed, threads=1):
+    """A task: mesh_curvatures on the tile (points: its vertices' coordinates) and the
+    check. Returns the owned vertices' global indices, their values as MeshCurvatures,
+    the global indices of those the check flags, and the seconds the task took."""
+    start = time.monotonic()
+    r = mesh_curvatures(points, tile.faces, method, threads=threads, **settings)
+    flagged = check_tile(tile, points, r.status, needed)
+    owned = tile.owned
+    return (tile.vertices[owned], MeshCurvatures(*(a[owned] for a in r)), tile.vertices[flagged],
+            time.monotonic() - start)
+
+
+class TiledRun(NamedTuple):
+    """What run_tiles did: the tiles, the re-cuts (tiles run again with a wider halo),
+    the halo overhead (the vertices of the tiles kept summed over the input's, minus
+    one), the wall time, the sum of the tasks' times (re-cut ones too), and the halo
+    each tile ended with, by cell."""
+
+    tiles: int
+    recuts: int
+    overhead: float
+    seconds: float
+    task_seconds: float
+    halos: dict
+
+    def summary(self):
+        return (f"{self.tiles} tiles, {self.recuts} re-cut, halo overhead {100 * self.overhead:.1f}%, "
+                f"{self.seconds:.2f} s wall, {self.task_seconds:.2f} s in tasks")
+
+
+class _Done:
+    """A task the serial driver ran at its submission."""
+
+    def __init__(self, value):
+        self.value = value
+
+
+class _Serial:
+    """The driver without Dask: tasks run at submission, in order."""
+
+    @staticmethod
+    def submit(function, *args, **kwargs):
+        return _Done(function(*args, **kwargs))
+
+    @staticmethod
+    def completed(futures):
+        return iter(futures)
+
+    @staticmethod
+    def result(future):
+        return future.value
+
+
+class _Dask:
+    """One task per tile on a Dask distributed client."""
+
+    def __init__(self, client):
+        self.client = client
+
+    def submit(self, function, *args, **kwargs):
+        return self.client.submit(function, *args, pure=False, **kwargs)
+
+    @staticmethod
+    def completed(futures):
+        from distributed import as_completed
+        return as_completed(futures)
+
+    @staticmethod
+    def result(future):
+        return future.result()
+
+
+def _progress_printer(stream):
+    start = time.monotonic()
+
+    def show(done, total, vertices):
+        elapsed = time.monotonic() - start
+        rate = vertices / elapsed if elapsed > 0 else 0.0
+        left = elapsed * (total - done) / done
+        stream.write(f"\rtiles {done}/{total}, {rate:,.0f} vertices/s, {left:.0f} s left ")
+        if done == total:
+            stream.write("\n")
+        stream.flush()
+
+    return show
+
+
+def _driver(scheduler):
+    """The driver of `scheduler` (see run_tiles) and what to close after the run."""
+    if scheduler == "serial":
+        return _Serial(), []
+    from distributed import Client, LocalCluster
+    if scheduler is None:
+        cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
+                               dashboard_address=None)
+        client = Client(cluster)
+        return _Dask(client), [client, cluster]
+    if isinstance(scheduler, str):
+        client = Client(scheduler)
+        return _Dask(client), [client]
+    return _Dask(scheduler), []
+
+
+def run_tiles(vertices, faces, method="paraboloid", *, tiles=(3, 3), halo=None, scheduler="serial",
+              max_recuts=4, threads=1, progress=None, **settings):
+    """mesh_curvatures(vertices, faces, method, **settings) computed tile by tile, bit for bit.
+
+    tiles: the grid (nx, ny) in x and y. halo: by default halo_of(method, **settings);
+    where the check flags a tile it is cut again with a wider halo (Halo.wider), at most
+    max_recuts times (then RuntimeError). radius "Nx" is made absolute with
+    mean_edge_length of the whole mesh first. scheduler: "serial" (no Dask), a
+    distributed.Client, a scheduler's address, or None (a LocalCluster of 2 worker
+    processes of one thread on localhost, closed at the end). threads: each task's, as
+    mesh_curvatures'. progress: None, True (a line on stderr) or a function (tiles done,
+    tiles, vertices done). Returns (MeshCurvatures of the whole mesh, TiledRun).
+    """
+    start = time.monotonic()
+    vertices = np.ascontiguousarray(vertices, dtype=np.float64)
+    faces = np.ascontiguousarray(faces, dtype=np.int64)
+    radius = settings.get("radius")
+    if isinstance(radius, str):
+        if not radius.endswith("x"):
+            raise ValueError(f"radius must be a length or a string 'Nx', got {radius!r}")
+        settings["radius"] = float(radius[:-1]) * mean_edge_length(vertices, faces)
+    needed = halo_of(method, **settings)
+    if progress is True:
+        progress = _progress_printer(sys.stderr)
+
+    n = len(vertices)
+    out = MeshCurvatures(*(np.empty(n) for _ in range(4)), np.empty((n, 3)), np.empty((n, 3)),
+                         np.empty(n, dtype=np.uint8))
+    cut = cut_tiles(vertices, faces, tiles, halo or needed)
+    driver, to_close = _driver(scheduler)
+    futures = {}
+
+    def submit(tile):
+        future = driver.submit(run_tile, vertices[tile.vertices], tile, method, settings, needed, threads)
+        futures[future] = tile
+        return future
+
+    recuts, halos = {}, {}
+    done = tile_vertices = stitched = 0
+    task_seconds = 0.0
+    try:
+        pending = [submit(tile) for tile in cut]
+        while pending:
+            again = []
+            for future in driver.completed(pending):
+                tile = futures.pop(future)
+                owned, values, flagged, seconds = driver.result(future)
+                task_seconds += seconds
+                if len(flagged):
+                    recuts[tile.cell] = recuts.get(tile.cell, 0) + 1
+                    if recuts[tile.cell] > max_recuts:
+                        raise RuntimeError(f"tile {tile.cell}: {len(flagged)} vertices still flagged with the halo "
+                                           f"{tile.halo}, after {max_recuts} re-cuts")
+                    again.append(submit(recut(vertices, faces, tile, tile.halo.wider(needed))))
+                    continue
+                for column, value in zip(out, values):
+                    column[owned] = value
+                done += 1
+                stitched += len(owned)
+                tile_vertices += len(tile.vertices)
+                halos[tile.cell] = tile.halo
+                if progress:
+                    progress(done, len(cut), stitched)
+            pending = again
+    finally:
+        for resource in to_close:
+            resource.close()
+    return out, TiledRun(len(cut), sum(recuts.values()), tile_vertices / n - 1, time.monotonic() - start,
+                         task_seconds, halos)
+
+
+def _read_mesh(path):
+    """(vertices, faces) of an .npz (arrays `vertices` and `faces`) or an ASCII OFF of one face size."""
+    if path.endswith(".npz"):
+        with np.load(path) as arrays:
+            return arrays["vertices"], arrays["faces"]
+    if not path.endswith(".off"):
+        raise SystemExit(f"{path}: give an .npz (vertices, faces) or an ASCII .off")
+    with open(path, encoding="ascii") as f:
+        words = [w for line in f for w in line.split("#", 1)[0].split()]
+    if not words or words[0] != "OFF":
+        raise SystemExit(f"{path}: no OFF header")
+    n, m = int(words[1]), int(words[2])
+    vertices = np.array(words[4:4 + 3 * n], dtype=np.float64).reshape(n, 3)
+    rest = np.array(words[4 + 3 * n:], dtype=np.int64)
+    k = int(rest[0]) if m else 3
+    if len(rest) != m * (k + 1) or (m and np.any(rest[::k + 1] != k)):
+        raise SystemExit(f"{path}: the faces are not {m} polygons of {k} vertices")
+    return vertices, rest.reshape(m, k + 1)[:, 1:]
+
+
+def main(argv=None):
+    import argparse
+    parser = argparse.ArgumentParser(
+        prog="python3 -m curvature_estimation.tiles",
+        description="Curvature of a surface mesh in tiles with halos, serially or on Dask: the values of "
+                    "mesh_curvatures (and of the tool) on the whole mesh, bit for bit.")
+    parser.add_argument("input", help="an .npz of arrays vertices (n, 3) and faces (m, k), or an ASCII .off")
+    parser.add_argument("-o", "--output", help="an .npz of the columns (k_max, k_min, mean, gaussian, d_max, "
+                                               "d_min, status); without it, the summary only")
+    parser.add_argument("-m", "--method", default="paraboloid")
+    parser.add_argument("--tiles", default="3x3", help="the grid in x and y, e.g. 4x4")
+    parser.add_argument("--scheduler", default="local",
+                        help="a Dask scheduler's address, 'local' (a LocalCluster of 2 processes) or 'serial'")
+    parser.add_argument("--halo-rings", type=int,
+                        help="cut with this many rings first (default: the method's halo; a narrower one is widened)")
+    parser.add_argument("--threads", type=int, default=1, help="each task's threads")
+    for option in ("rings", "order", "fit-degree", "degree", "monge-degree"):
+        parser.add_argument("--" + option, type=int)
+    parser.add_argument("--radius", help="a length, or Nx for N mean edge lengths of the whole mesh")
+    a = parser.parse_args(argv)
+    vertices, faces = _read_mesh(a.input)
+    settings = {k: v for k, v in (("rings", a.rings), ("order", a.order), ("fit_degree", a.fit_degree),
+                                  ("degree", a.degree), ("monge_degree", a.monge_degree)) if v is not None}
+    if a.radius is not None:
+        settings["radius"] = a.radius if a.radius.endswith("x") else float(a.radius)
+    halo = None
+    if a.halo_rings is not None:
+        if a.radius is not None:
+            parser.error("--halo-rings is for ring neighborhoods, not with --radius")
+        halo = Halo(a.halo_rings)
+    scheduler = {"local": None, "serial": "serial"}.get(a.scheduler, a.scheduler)
+    tiles = tuple(int(t) for t in a.tiles.split("x"))
+    result, run = run_tiles(vertices, faces, a.method, tiles=tiles, halo=halo, scheduler=scheduler,
+                            threads=a.threads, progress=sys.stderr.isatty() or None, **settings)
+    if a.output:
+        np.savez(a.output, **result._asdict())
+    counts = np.bincount(result.status, minlength=len(Status))
+    print(f"{len(vertices)} vertices: {run.summary()}; "
+          + ", ".join(f"{s.name} {counts[s]}" for s in Status))
+
+
+if __name__ == "__main__":
+    # Through the package's module: Dask pickles tiles by reference to their class's module.
+    from curvature_estimation.tiles import main as package_main
+
+    package_main()
