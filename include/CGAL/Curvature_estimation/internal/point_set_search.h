@@ -137,9 +137,12 @@ private:
       if (points[i].allFinite()) {
         key = 0;
         const Eigen::Vector3d q = (points[i] - box.min()).cwiseProduct(scale);
+        std::uint64_t cell[3]; // in range also where the box's extent overflows (q infinite or NaN)
+        for (int c = 0; c < 3; ++c)
+          cell[c] = q[c] > 0 ? std::uint64_t((std::min)(q[c], double(1 << 21) - 1)) : 0;
         for (int bit = 20; bit >= 0; --bit)
           for (int c = 0; c < 3; ++c)
-            key = (key << 1) | ((std::uint64_t(q[c]) >> bit) & 1);
+            key = (key << 1) | ((cell[c] >> bit) & 1);
       }
       keys[i] = {key, Index(i)};
     }
