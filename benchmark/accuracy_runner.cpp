@@ -2,7 +2,7 @@
 // Accuracy of every estimator of benchmark/estimators.h against exact curvature,
 // written as CSV for benchmark/make_report.py.
 //
-//   ./build/benchmark/accuracy_runner [--quick] [--out DIR]     (DIR defaults to .)
+//   ./build/benchmark/accuracy_runner [--quick] [--out DIR] [--only PART]   (DIR defaults to .)
 //   ./build/benchmark/accuracy_runner --list        (prints DIR/estimators.json, below)
 //
 // Surfaces: five of Hamann's graph functions on [-1,1]^2, a sphere, a torus and an
@@ -10,6 +10,8 @@
 // irregular one (jittered parameter domain, points moved up to 0.2 of the local
 // spacing), the graphs also on Delaunay triangulations of random points; each on a
 // refinement series of 4 sizes (2 with --quick), so that the report can fit observed orders.
+// --only runs one part: accuracy, noise, bunny or scale (the files of each below; every
+// part writes cgal_version.txt and estimators.json).
 //
 // DIR/accuracy.csv, one row per surface x mesh x size x estimator x region x quantity:
 //   surface,mesh,level,vertices,h,estimator,region,quantity,rms,max,count,not_estimable
@@ -34,6 +36,20 @@
 // default paraboloid fit (1-ring) and the Gauss map are there too, for reference, with
 // radius_edges and ball_vertices empty.
 //
+// DIR/scale_selection.csv, the report's scale-selection section: the noisy family of
+// test_scale_selection (noisy_meshes.h: ellipsoid, torus and Delaunay mesh, noise of 1, 5
+// and 15% of the mean edge length h or varying from 0 to 15%), interior H RMS of the
+// paraboloid fit (degree 2), jet fitting (d = 2) and, built against CGAL 6, ICC over balls
+// of 1 to 16 h (steps of 2^(1/2)), and of the first two with ball_radius_range(1 h, 16 h);
+// one row per mesh x estimator x radius, all threads, the same meshes with --quick:
+//   mesh,vertices,h,estimator,radius_edges,H_rms,median_radius_edges,median_noise_ratio
+// radius_edges is empty on the rows of the selection, which give the median over the
+// interior vertices of the radius chosen (in h) and of the noise estimated over the noise
+// added (where some was added); those two are empty on the fixed rows.
+// DIR/bunny_scale_radius.csv and DIR/bunny_scale_noise.csv: x,y,z of bunny00 and the radius
+// and the noise (in mean edge lengths of the mesh) that the default paraboloid fit with
+// ball_radius_range(1 h, 16 h) gives on the scan (`scan`) and on the scan with Gaussian
+// noise of 0.1 h added in each coordinate (seed 1, `noisy`); and DIR/bunny_faces.csv (below).
 // DIR/bunny_mean_curvature.csv (x,y,z and one column of H per estimator that gives H),
 // DIR/bunny_ball_mean_curvature.csv (x,y,z and H of the default paraboloid fit over its
 // 1-ring, `paraboloid`, and over balls of 2 and 6 mean edge lengths, `ball_2h` and
@@ -50,7 +66,9 @@
 #include <CGAL/Curvature_estimation/internal/rings.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -58,6 +76,7 @@
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <iterator>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -290,6 +309,29 @@ void run_noise(bool quick, const std::string& path)
   }
 }
 
+// The points (in vertex order) and triangles of `mesh`. A mesh read from a file has no
+// removed elements: vertex indices are 0 .. n-1 in iteration order, the row numbers of
+// the per-vertex CSV files.
+ce_test::Soup soup_of(const Mesh& mesh)
+{
+  ce_test::Soup soup;
+  for (vertex_descriptor v : vertices(mesh)) {
+    const Kernel::Point_3& p = mesh.point(v);
+    soup.points.emplace_back(p.x(), p.y(), p.z());
+  }
+  for (Mesh::Face_index f : faces(mesh)) {
+    std::array<std::size_t, 3> face{};
+    std::size_t k = 0;
+    for (vertex_descriptor v : vertices_around_face(halfedge(f, mesh), mesh)) {
+      if (k == 3)
+        throw std::runtime_error("ce_bench::soup_of: a face that is not a triangle");
+      face[k++] = std::size_t(v);
+    }
+    soup.faces.push_back(face);
+  }
+  return soup;
+}
+
 // Writes x,y,z and the columns named `names` (one value per vertex, in vertex order) of
 // `mesh` to `path` as CSV.
 void write_vertex_columns(const std::string& path, const Mesh& mesh, const std::vector<std::string>& names,
@@ -308,6 +350,16 @@ void write_vertex_columns(const std::string& path, const Mesh& mesh, const std::
     out << '\n';
     ++i;
   }
+  if (!out)
+    throw std::runtime_error("cannot write " + path);
+}
+
+// The triangles of `mesh` (three vertex indices per row) to `path` as CSV, for the pictures.
+void write_faces(const std::string& path, const Mesh& mesh)
+{
+  std::ofstream out = csv_file(path, "a,b,c");
+  for (const auto& [a, b, c] : soup_of(mesh).faces)
+    out << a << ',' << b << ',' << c << '\n';
   if (!out)
     throw std::runtime_error("cannot write " + path);
 }
@@ -339,19 +391,114 @@ void run_bunny(const std::string& dir)
   }
   write_vertex_columns(dir + "/bunny_ball_mean_curvature.csv", mesh, ball_names, ball_columns);
 
-  // A mesh read from a file has no removed elements: vertex indices are 0 .. n-1 in
-  // iteration order, the row numbers of bunny_mean_curvature.csv.
-  std::ofstream faces_out = csv_file(dir + "/bunny_faces.csv", "a,b,c");
-  for (Mesh::Face_index f : faces(mesh)) {
-    const char* separator = "";
-    for (vertex_descriptor v : vertices_around_face(halfedge(f, mesh), mesh)) {
-      faces_out << separator << std::size_t(v);
-      separator = ",";
-    }
-    faces_out << '\n';
+  write_faces(dir + "/bunny_faces.csv", mesh);
+}
+
+// The radius range of the scale selection, in mean edge lengths: that of the tests.
+constexpr double selection_max_edges = 16;
+
+// H, and the radius and the noise in mean edge lengths h, of `e` (a method that reads
+// ball_radius_range) with ball_radius_range(1 h, 16 h) on `mesh`, all threads.
+struct Selection
+{
+  std::vector<double> mean, radius, noise;
+};
+
+Selection run_selection(const Estimator& e, Mesh& mesh, double h)
+{
+  auto radius = mesh.add_property_map<vertex_descriptor, double>("v:selected_radius").first;
+  auto noise = mesh.add_property_map<vertex_descriptor, double>("v:selected_noise").first;
+  ce_tool::Settings settings = e.settings;
+  settings.radius_selection = ce_tool::Settings::Radius_selection{{h, selection_max_edges * h}, radius, noise};
+  Selection s;
+  s.mean =
+    ce_test::run_with_all_outputs<Kernel>(
+      mesh, [&](const Mesh& m, const auto& np) { ce_tool::run(*e.method, m, settings, outputs_of(np), all_threads); },
+      CE::parameters::default_values())
+      .mean;
+  for (vertex_descriptor v : vertices(mesh)) {
+    s.radius.push_back(radius[v] / h);
+    s.noise.push_back(noise[v] / h);
   }
-  if (!faces_out)
-    throw std::runtime_error("cannot write " + dir + "/bunny_faces.csv");
+  mesh.remove_property_map(radius);
+  mesh.remove_property_map(noise);
+  return s;
+}
+
+// The median of `values` where `keep` holds.
+double median_where(const std::vector<double>& values, const std::function<bool(std::size_t)>& keep)
+{
+  std::vector<double> kept;
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (keep(i))
+      kept.push_back(values[i]);
+  if (kept.empty())
+    return std::nan("");
+  std::nth_element(kept.begin(), kept.begin() + kept.size() / 2, kept.end());
+  return kept[kept.size() / 2];
+}
+
+// The scale selection against fixed balls on the noisy family: DIR/scale_selection.csv (see the top).
+void run_scale_selection(const std::string& path)
+{
+  std::ofstream out =
+    csv_file(path, "mesh,vertices,h,estimator,radius_edges,H_rms,median_radius_edges,median_noise_ratio");
+  std::vector<const Ball_estimator*> compared; // ours (degree 2), jet fitting and ICC
+  for (const Ball_estimator& b : ball_estimators())
+    if (b.estimator.name == "paraboloid_ball" || b.estimator.name == "jet_d2_ball" || b.estimator.name == "icc_ball")
+      compared.push_back(&b);
+  for (const ce_test::Noisy_shape shape :
+       {ce_test::Noisy_shape::ellipsoid, ce_test::Noisy_shape::torus, ce_test::Noisy_shape::delaunay})
+    for (const double fraction : ce_test::noisy_family_fractions()) {
+      const auto start = std::chrono::steady_clock::now();
+      const ce_test::Noisy_family_soup family = ce_test::noisy_family_soup(shape, fraction);
+      Mesh mesh = ce_test::to_mesh<Mesh>(family.soup);
+      const double h = CE::mean_edge_length(mesh);
+      const auto write = [&](const Ball_estimator& b, const std::string& radius_edges, const std::vector<double>& mean,
+                             const std::string& medians) {
+        out << family.name << ',' << mesh.number_of_vertices() << ',' << h << ',' << b.estimator.name << ','
+            << radius_edges << ',' << ce_test::interior_rms(family, mean) << ',' << medians << '\n';
+      };
+      for (const Ball_estimator* b : compared) {
+        for (const double edges : ce_test::noisy_family_radii_in_edges())
+          write(*b, std::to_string(edges),
+                estimates(in_ball(b->estimator, edges), mesh, Normal_map(), h, all_threads).mean, ",");
+        if (!(b->estimator.method && b->estimator.method->reads_setting(ce_tool::Setting::ball_radius_range)))
+          continue;
+        const Selection s = run_selection(b->estimator, mesh, h);
+        std::vector<double> noise_ratio;
+        for (std::size_t i = 0; i < s.noise.size(); ++i)
+          noise_ratio.push_back(s.noise[i] * h / family.sigma[i]);
+        const double radius = median_where(s.radius, [&](std::size_t i) { return bool(family.interior[i]); });
+        const double noise =
+          median_where(noise_ratio, [&](std::size_t i) { return family.interior[i] && family.sigma[i] > 0; });
+        write(*b, "", s.mean, std::to_string(radius) + ',' + std::to_string(noise));
+      }
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::fprintf(stderr, "scale selection: %-18s %7zu vertices, %6.2f s\n", family.name.c_str(),
+                   std::size_t(mesh.number_of_vertices()), seconds);
+    }
+}
+
+// The radius and the noise the scale selection gives on the bunny as scanned and with
+// noise of 0.1 h added: DIR/bunny_scale_radius.csv and DIR/bunny_scale_noise.csv.
+void run_bunny_scale_selection(const std::string& dir)
+{
+  Mesh scan = read_real_mesh("bunny00");
+  Mesh noisy = scan;
+  ce_test::Soup soup = soup_of(scan);
+  ce_test::add_gaussian_noise(soup, 0.1, 1);
+  std::size_t i = 0;
+  for (vertex_descriptor v : vertices(noisy)) {
+    noisy.point(v) = Kernel::Point_3(soup.points[i].x(), soup.points[i].y(), soup.points[i].z());
+    ++i;
+  }
+  const Estimator& paraboloid = estimator("paraboloid");
+  const Selection on_scan = run_selection(paraboloid, scan, CE::mean_edge_length(scan));
+  const Selection on_noisy = run_selection(paraboloid, noisy, CE::mean_edge_length(noisy));
+  write_vertex_columns(dir + "/bunny_scale_radius.csv", scan, {"scan", "noisy"}, {on_scan.radius, on_noisy.radius});
+  write_vertex_columns(dir + "/bunny_scale_noise.csv", scan, {"scan", "noisy"}, {on_scan.noise, on_noisy.noise});
+  write_faces(dir + "/bunny_faces.csv", scan);
 }
 
 } // namespace
@@ -360,16 +507,21 @@ int main(int argc, char** argv)
 {
   bool quick = false;
   std::string dir = ".";
+  const std::string parts[] = {"accuracy", "noise", "bunny", "scale"};
+  std::string only; // empty: every part
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--quick") == 0)
       quick = true;
     else if (std::strcmp(argv[i], "--out") == 0 && i + 1 < argc)
       dir = argv[++i];
+    else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc &&
+             std::find(std::begin(parts), std::end(parts), std::string(argv[i + 1])) != std::end(parts))
+      only = argv[++i];
     else if (std::strcmp(argv[i], "--list") == 0) {
       write_estimators_json(std::cout);
       return 0;
     } else {
-      std::cerr << "usage: accuracy_runner [--quick] [--out DIR] | --list\n";
+      std::cerr << "usage: accuracy_runner [--quick] [--out DIR] [--only accuracy|noise|bunny|scale] | --list\n";
       return 2;
     }
   }
@@ -381,9 +533,16 @@ int main(int argc, char** argv)
     write_estimators_json(list);
     if (!list)
       throw std::runtime_error("cannot write " + dir + "/estimators.json");
-    run_accuracy(quick, dir + "/accuracy.csv");
-    run_noise(quick, dir + "/noise_radius.csv");
-    run_bunny(dir);
+    if (only.empty() || only == "accuracy")
+      run_accuracy(quick, dir + "/accuracy.csv");
+    if (only.empty() || only == "noise")
+      run_noise(quick, dir + "/noise_radius.csv");
+    if (only.empty() || only == "bunny")
+      run_bunny(dir);
+    if (only.empty() || only == "scale") {
+      run_scale_selection(dir + "/scale_selection.csv");
+      run_bunny_scale_selection(dir);
+    }
   } catch (const std::exception& e) {
     std::cerr << "accuracy_runner: " << e.what() << '\n';
     return 1;

@@ -11,6 +11,11 @@ Run by scripts/make_report.sh; by hand:
       --accuracy-dir DIR --build-dir build [--quick] [--end-to-end FILE] [--instructions FILE] \
       [--first-calls FILE]
 
+One section alone, into the existing OUT_DIR/REPORT.md (its other sections unchanged), from the
+outputs of `accuracy_runner --only scale --out DIR`:
+
+  /usr/bin/python3 benchmark/make_report.py --section scale --accuracy-dir DIR
+
 Raw data of a run without DIR/estimators.json: write it with `accuracy_runner --list`.
 Needs matplotlib and numpy (Debian: python3-matplotlib python3-numpy, installed by
 scripts/install_dependencies.sh --report). Every number in the report comes from the
@@ -26,14 +31,33 @@ from report.bunny import bunny_section
 from report.estimators import Estimators
 from report.markdown import table
 from report.noise import noise_section
-from report.speed import end_to_end_section, first_calls_section, speed_section, targets_section
+from report.scale import TITLE as SCALE_TITLE
+from report.scale import scale_section
+from report.speed import END_TO_END_TITLE, end_to_end_section, first_calls_section, speed_section, targets_section
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+# The sections that can be written alone: {name: (title, function(est, accuracy_dir, figures))}.
+SECTIONS = {"scale": (SCALE_TITLE, scale_section)}
+
+
+def replace_section(report, title, section):
+    """report (REPORT.md's text) with its section `title` (up to the next "## " heading) replaced by the
+    lines of `section`; a report without it gets it where the full report has it, before the tool
+    end to end, or at the end."""
+    lines = report.split("\n")
+    if title in lines:
+        start = lines.index(title)
+        end = next((i for i in range(start + 1, len(lines)) if lines[i].startswith("## ")), len(lines))
+    else:
+        start = end = next((i for i, line in enumerate(lines) if line == END_TO_END_TITLE), len(lines))
+    return "\n".join(lines[:start] + section + lines[end:])
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--bench-json", required=True)
+    ap.add_argument("--bench-json", help="required unless --section")
+    ap.add_argument("--section", choices=sorted(SECTIONS),
+                    help="write this section alone into OUT_DIR/REPORT.md, from ACCURACY_DIR")
     ap.add_argument("--accuracy-dir", required=True)
     ap.add_argument("--build-dir", default="build")
     ap.add_argument("--out-dir", default=HERE, help="where REPORT.md and figures/ go (default: benchmark/)")
@@ -47,6 +71,11 @@ def main():
 
     figures = os.path.join(args.out_dir, "figures")
     os.makedirs(figures, exist_ok=True)
+    if args.section:
+        write_section(args, figures)
+        return
+    if not args.bench_json:
+        ap.error("--bench-json is required without --section")
     speed = inputs.read_speed(args.bench_json)
     rows = inputs.read_accuracy(os.path.join(args.accuracy_dir, "accuracy.csv"))
     est = Estimators(args.estimators or os.path.join(args.accuracy_dir, "estimators.json"),
@@ -70,12 +99,25 @@ def main():
     lines += accuracy_section(est, rows, figures)
     lines += bunny_section(est, args.accuracy_dir, figures)
     lines += noise_section(est, args.accuracy_dir, figures)
+    lines += scale_section(est, args.accuracy_dir, figures)
     if end_to_end:
         lines += end_to_end_section(end_to_end)
 
     with open(os.path.join(args.out_dir, "REPORT.md"), "w") as f:
         f.write("\n".join(lines))
     print("make_report: wrote %s and %s" % (os.path.join(args.out_dir, "REPORT.md"), figures))
+
+
+def write_section(args, figures):
+    """The section args.section alone, into the existing OUT_DIR/REPORT.md."""
+    path = os.path.join(args.out_dir, "REPORT.md")
+    est = Estimators(args.estimators or os.path.join(args.accuracy_dir, "estimators.json"), set())
+    title, section = SECTIONS[args.section]
+    with open(path) as f:
+        report = f.read()
+    with open(path, "w") as f:
+        f.write(replace_section(report, title, section(est, args.accuracy_dir, figures)))
+    print("make_report: wrote the section %s of %s, and its figures in %s" % (args.section, path, figures))
 
 
 if __name__ == "__main__":

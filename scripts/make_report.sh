@@ -9,6 +9,9 @@
 #   scripts/make_report.sh --quick    smoke run (a few minutes, small meshes): writes
 #                                     BUILD/report_quick/REPORT.md, so that the committed
 #                                     report is never replaced by smoke numbers
+#   scripts/make_report.sh --section=scale   the scale-selection section alone (about 2
+#                                     minutes after the build): rewrites that section of
+#                                     benchmark/REPORT.md and its figures, nothing else
 #
 # The CGAL: CGAL_DIR=<dir of CGALConfig.cmake> scripts/make_report.sh uses that one; without
 # CGAL_DIR, ../shared/cgal-6.1.1/lib/cmake/CGAL (beside the repository) when it exists - the
@@ -17,7 +20,7 @@
 # Environment: CGAL_DIR, CE_BUILD_DIR (default: build-report, the report's own build
 # directory, configured with the CGAL chosen above at every run; not the tests' build/),
 # CE_JOBS (parallel compile jobs, default 2).
-# Raw outputs (speed.json, accuracy.csv, noise_radius.csv, estimators.json, the bunny's CSVs,
+# Raw outputs (speed.json, accuracy.csv, noise_radius.csv, scale_selection.csv, estimators.json, the bunny's CSVs,
 # first_calls.jsonl, end_to_end.txt, instructions.txt) stay in BUILD/report[_quick]/.
 set -euo pipefail
 
@@ -25,11 +28,13 @@ set -euo pipefail
 cgal_dir="${CGAL_DIR:+$(cd "$CGAL_DIR" && pwd)}"
 cd "$(dirname "$0")/.."
 quick=()
+section=
 for arg in "$@"; do
   case "$arg" in
     --quick) quick=(--quick) ;;
-    -h|--help) sed -n '2,21p' "$0"; exit 0 ;;
-    *) echo "make_report: unknown argument '$arg' (expected --quick)" >&2; exit 2 ;;
+    --section=scale) section=scale ;;
+    -h|--help) sed -n '2,24p' "$0"; exit 0 ;;
+    *) echo "make_report: unknown argument '$arg' (expected --quick or --section=scale)" >&2; exit 2 ;;
   esac
 done
 
@@ -63,8 +68,17 @@ mkdir -p "$build"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCE_BUILD_BENCHMARKS=ON -DCE_BUILD_TESTS=OFF \
   -DCE_BUILD_EXAMPLES=OFF -DCE_BUILD_TOOLS=ON "${cgal[@]}" > "$build/make_report_configure.log" 2>&1 ||
   { cat "$build/make_report_configure.log" >&2; exit 1; }
-cmake --build "$build" --target accuracy_runner bench_estimators first_calls curvature -j "$jobs"
 mkdir -p "$raw"
+if [ -n "$section" ]; then
+  cmake --build "$build" --target accuracy_runner -j "$jobs"
+  step "accuracy runner, part $section"
+  "$build/benchmark/accuracy_runner" --only "$section" --out "$raw"
+  step "report, section $section"
+  /usr/bin/python3 benchmark/make_report.py --section "$section" --accuracy-dir "$raw" --out-dir benchmark
+  step "done: benchmark/REPORT.md, section $section"
+  exit 0
+fi
+cmake --build "$build" --target accuracy_runner bench_estimators first_calls curvature -j "$jobs"
 
 # Speed first: it is the part that suffers most from a busy machine. The repetitions
 # interleaved in a random order: back to back, the 3 of a case can all fall in one

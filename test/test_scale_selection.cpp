@@ -109,79 +109,24 @@ TEST(CandidateRadii, GeometricStepsBetweenTheBounds)
   EXPECT_LE(CE::internal::candidate_radii({1e-6, 1e6}).size(), 65u);
 }
 
-// One mesh of the noisy family, its exact curvature (before the noise), the
-// noise's standard deviation per vertex and which vertices are interior (every
-// radius up to 16 mean edges stays on the surface).
-struct Family_mesh
+// One mesh of the noisy family (noisy_meshes.h) and its mean edge length after the noise.
+struct Family_mesh : ce_test::Noisy_family_soup
 {
-  std::string name;
+  explicit Family_mesh(ce_test::Noisy_family_soup family)
+      : ce_test::Noisy_family_soup(std::move(family))
+      , mesh(ce_test::to_mesh<Mesh>(soup))
+      , edge(CE::mean_edge_length(mesh))
+  {}
+
   Mesh mesh;
-  std::vector<ce_test::Exact_curvature> exact;
-  std::vector<double> sigma;
-  std::vector<bool> interior;
-  double edge = 0; // mean edge length after the noise
+  double edge;
 };
 
-enum class Shape
-{
-  ellipsoid,
-  torus,
-  delaunay
-};
+using Shape = ce_test::Noisy_shape;
 
-// `fraction` of the mean edge length, or where negative, from 0 to 0.15 across x.
 Family_mesh family_mesh(Shape shape, double fraction)
 {
-  Family_mesh m;
-  ce_test::Soup soup;
-  const auto functions = ce_test::hamann_table1_functions();
-  switch (shape) {
-    case Shape::ellipsoid:
-      soup = ce_test::ellipsoid_soup(1, 0.8, 0.6, 4, 0.2, 3);
-      m.exact = ce_test::ellipsoid_curvatures(1, 0.8, 0.6, soup);
-      m.name = "ellipsoid";
-      break;
-    case Shape::torus:
-      soup = ce_test::torus_soup(1, 0.4, 160, 64, 0.2, 3);
-      m.exact = ce_test::torus_curvatures(1, 0.4, soup);
-      m.name = "torus";
-      break;
-    case Shape::delaunay:
-      soup = ce_test::delaunay_graph_soup(functions[8], 6000, -1, 1, 3);
-      m.exact = ce_test::graph_curvatures(functions[8], soup);
-      m.name = "delaunay";
-      break;
-  }
-  const double h = ce_test::mean_edge_length(soup);
-  double lo = 1e300, hi = -1e300;
-  for (const auto& p : soup.points) {
-    lo = (std::min)(lo, p.x());
-    hi = (std::max)(hi, p.x());
-  }
-  std::mt19937 gen(11);
-  for (auto& p : soup.points) {
-    const double f = fraction >= 0 ? fraction : 0.15 * (p.x() - lo) / (hi - lo);
-    m.sigma.push_back(f * h);
-    m.interior.push_back(shape != Shape::delaunay || (std::abs(p.x()) < 1 - 17 * h && std::abs(p.y()) < 1 - 17 * h));
-    for (int k = 0; k < 3; ++k)
-      p[k] += f * h * ce_test::standard_normal(gen);
-  }
-  m.name += fraction < 0 ? " varying" : " " + std::to_string(static_cast<int>(std::lround(100 * fraction))) + "%";
-  m.mesh = ce_test::to_mesh<Mesh>(soup);
-  m.edge = CE::mean_edge_length(m.mesh);
-  return m;
-}
-
-double interior_rms(const Family_mesh& m, const std::vector<double>& mean)
-{
-  double sum = 0;
-  std::size_t count = 0;
-  for (std::size_t i = 0; i < mean.size(); ++i)
-    if (m.interior[i]) {
-      sum += (mean[i] - m.exact[i].H) * (mean[i] - m.exact[i].H);
-      ++count;
-    }
-  return std::sqrt(sum / count);
+  return Family_mesh(ce_test::noisy_family_soup(shape, fraction));
 }
 
 struct Selection_run
@@ -313,8 +258,7 @@ Family_result family_result(const Family_mesh& m, int degree)
   r.default_fit = interior_rms(
     m, ce_test::run_with_all_outputs<Kernel>(m.mesh, paraboloid(degree), params::use_fallbacks(true)).mean);
   r.best_fixed = HUGE_VAL;
-  for (int k = 0; k <= 8; ++k) {
-    const double radius = std::exp2(k / 2.0);
+  for (const double radius : ce_test::noisy_family_radii_in_edges()) {
     const double e = interior_rms(
       m, ce_test::run_with_all_outputs<Kernel>(m.mesh, paraboloid(degree), params::ball_radius(radius * m.edge)).mean);
     if (e < r.best_fixed) {

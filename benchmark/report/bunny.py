@@ -9,10 +9,20 @@ import matplotlib.pyplot as plt
 import numpy as np
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
-def bunny_figure(vpath, fpath, title, path):
-    """Renders the bunny of fpath (three vertex indices per row) once per column of H of vpath
-    (x,y,z, then one column per name), four panels a row, titled title(name), in one colour scale,
-    into path. Returns the number of vertices and the bounds of the colour scale."""
+def curvature_scale(lo, hi):
+    """The colour scale of H: centred on 0 so that the colour tells the sign."""
+    if lo < 0 < hi:
+        return matplotlib.colors.TwoSlopeNorm(0.0, lo, hi), "coolwarm", "mean curvature H"
+    return matplotlib.colors.Normalize(lo, hi), "coolwarm", "mean curvature H"
+
+
+def bunny_figure(vpath, fpath, title, path, scale=curvature_scale, panel_width=4.5):
+    """Renders the bunny of fpath (three vertex indices per row) once per column of vpath
+    (x,y,z, then one column per name; by default H), four panels a row, titled title(name), in one
+    colour scale, into path. scale(lo, hi) gives the colour scale's norm, colour map and label from
+    the bounds of the values; the colour bar takes a share of the width, which fewer or narrower
+    panels than three of 4.5 inches leave too small for its label. Returns the number of vertices
+    and the bounds of the colour scale."""
     with open(vpath) as f:
         header = f.readline().strip().split(",")
     values = np.genfromtxt(vpath, delimiter=",", skip_header=1)
@@ -22,18 +32,15 @@ def bunny_figure(vpath, fpath, title, path):
     # bunny00.off is y-up; matplotlib's 3D axes are z-up.
     pts = xyz[:, [0, 2, 1]]
     tris = pts[faces]
-    # One colour scale for all panels, clamped at the 5th and 95th percentiles of H over every
+    # One colour scale for all panels, clamped at the 5th and 95th percentiles over every
     # panel (the scanned bunny is noisy: a few per cent of the vertices have |H| ten times
-    # the median and would wash the rest out), and centred on 0 so that the colour tells the sign.
+    # the median and would wash the rest out).
     lo_h, hi_h = (float(x) for x in np.nanpercentile(values[:, 3:], [5, 95]))
-    if lo_h < 0 < hi_h:
-        norm = matplotlib.colors.TwoSlopeNorm(0.0, lo_h, hi_h)
-    else:
-        norm = matplotlib.colors.Normalize(lo_h, hi_h)
-    cmap = matplotlib.colormaps["coolwarm"]
+    norm, cmap_name, label = scale(lo_h, hi_h)
+    cmap = matplotlib.colormaps[cmap_name]
     ncols = min(4, len(names))
     nrows = int(math.ceil(len(names) / ncols))
-    fig = plt.figure(figsize=(4.5 * ncols, 4.2 * nrows))
+    fig = plt.figure(figsize=(panel_width * ncols, 4.2 * nrows))
     lo, hi = pts.min(axis=0), pts.max(axis=0)
     for i, name in enumerate(names):
         ax = fig.add_subplot(nrows, ncols, i + 1, projection="3d")
@@ -51,7 +58,7 @@ def bunny_figure(vpath, fpath, title, path):
         ax.set_title(title(name), fontsize=10)
     fig.subplots_adjust(left=0, right=0.92, bottom=0, top=0.95, wspace=0, hspace=0.05)
     cax = fig.add_axes([0.94, 0.2, 0.012, 0.6])
-    fig.colorbar(matplotlib.cm.ScalarMappable(norm=norm, cmap=cmap), cax=cax, label="mean curvature H")
+    fig.colorbar(matplotlib.cm.ScalarMappable(norm=norm, cmap=cmap), cax=cax, label=label)
     fig.savefig(path, dpi=72)  # ~1 MB for the bunny of every estimator: it is committed
     plt.close(fig)
     return len(xyz), lo_h, hi_h

@@ -139,6 +139,20 @@ def read_noise(path):
     return rows
 
 
+def read_scale_selection(path):
+    rows = []
+    with open(path) as f:
+        for r in csv.DictReader(f):
+            r["vertices"] = int(r["vertices"])
+            for k in ("h", "H_rms"):
+                r[k] = float(r[k])
+            # radius_edges empty on the rows of the selection; the medians empty on the others.
+            for k in ("radius_edges", "median_radius_edges", "median_noise_ratio"):
+                r[k] = float(r[k]) if r[k] else None
+            rows.append(r)
+    return rows
+
+
 def read_end_to_end(path):
     """The output of benchmark/tool_end_to_end.sh: its mesh line, its rows (file, output, wall s,
     peak bytes/vertex) and the date of the run."""

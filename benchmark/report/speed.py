@@ -31,6 +31,8 @@ TARGET_PEAK_HEAP = 64.0
 TARGET_END_TO_END_SECONDS = 2.0
 TARGET_END_TO_END_BYTES = 400.0
 
+END_TO_END_TITLE = "## The tool end to end"
+
 
 def seq_par_rows(est, values, meshes, fmt):
     """A row per estimator of "seq / par" cells from {(estimator, mesh, seq|par): value}."""
@@ -256,7 +258,7 @@ def met(ok):
 
 def end_to_end_section(end_to_end):
     """The table of benchmark/tool_end_to_end.sh: the tool's wall time and peak memory per vertex."""
-    out = ["## The tool end to end", ""]
+    out = [END_TO_END_TITLE, ""]
     out += ["`benchmark/tool_end_to_end.sh`: `curvature --threads 1 FILE.off` (summary) and with `-o FILE.csv` on a "
             "generated ASCII OFF (%s), clean and with one face flipped (which takes the soup repair). Wall time "
             "(the least of three runs) and peak resident memory per vertex (`/usr/bin/time -v`). Targets (issue 16) for the clean file with the "
