@@ -7,8 +7,9 @@
 set -euo pipefail
 
 PACKAGES=(
-  # Toolchain and build system (C++17 compiler, CMake >= 3.16, make).
-  build-essential cmake g++ make
+  # Toolchain and build system (C++17 compiler, CMake >= 3.16, make; Ninja, which the build
+  # scripts use where a build directory is new: scripts/cmake_generator.sh).
+  build-essential cmake g++ make ninja-build
   # CGAL 5.5 headers + CMake config; libcgal-demo ships
   # /usr/share/doc/libcgal-dev/data.tar.gz (bunny, elephant, armadillo meshes).
   libcgal-dev libcgal-demo

@@ -30,7 +30,9 @@ if "$CXX" --version | grep -q clang; then
   TESTS+='|^fuzz_tool_input_short$'
 fi
 FLAGS="-fsanitize=$SANITIZERS -fno-sanitize-recover=all -fno-omit-frame-pointer"
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER="$CXX" \
+source scripts/cmake_generator.sh
+# shellcheck disable=SC2046 # the generator's options are words
+cmake $(cmake_generator "$BUILD_DIR") -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER="$CXX" \
   -DCE_BUILD_TESTS=ON -DCE_BUILD_TOOLS=ON -DCE_BUILD_EXAMPLES=OFF -DCE_BUILD_BENCHMARKS=OFF \
   -DCMAKE_CXX_FLAGS="$FLAGS" "${FUZZ[@]}" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" "$@"

@@ -30,7 +30,9 @@ if [ "$python" = ON ]; then
 fi
 
 bash scripts/install_dependencies.sh
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "${cgal[@]}" "${pic[@]}" \
+source scripts/cmake_generator.sh
+# shellcheck disable=SC2046 # the generator's options are words
+cmake $(cmake_generator "$BUILD_DIR") -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "${cgal[@]}" "${pic[@]}" \
   -DCE_BUILD_TESTS=ON -DCE_BUILD_EXAMPLES=ON -DCE_BUILD_BENCHMARKS="${CE_BUILD_BENCHMARKS:-ON}" "$@"
 cmake --build "$BUILD_DIR" -j "$JOBS"
 ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"
