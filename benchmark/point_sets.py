@@ -57,7 +57,7 @@ def best_runs(path):
     for run in data["benchmarks"]:
         if run.get("run_type") == "aggregate" or run.get("error_occurred"):
             continue
-        name = run.get("run_name", run["name"])
+        name = "/".join(run.get("run_name", run["name"]).split("/")[:3])  # CASE/kK/seq|par
         if name not in runs or run["real_time"] < runs[name]["real_time"]:
             runs[name] = run
     return runs, data["context"]
@@ -71,7 +71,7 @@ def pcl_paragraph():
     try:
         result = subprocess.run(["apt-get", "install", "--assume-no", "--no-install-recommends", "libpcl-dev"],
                                 capture_output=True, text=True, check=False, env={**os.environ, "LC_ALL": "C"})
-        summary = [line.strip() for line in result.stdout.splitlines()
+        summary = [line.strip().rstrip(".") for line in result.stdout.splitlines()
                    if "newly installed" in line or line.startswith(("Need to get", "After this operation"))]
     except OSError as e:
         summary = [f"apt-get could not run ({e})"]
@@ -87,14 +87,19 @@ def main():
     parser.add_argument("--points", default=1000000, type=int)
     parser.add_argument("--repetitions", default=3, type=int, help="runs of each case but the jet's (once)")
     parser.add_argument("--out", default=ROOT / "benchmark" / "POINT_SETS.md", type=Path)
+    parser.add_argument("--json", type=Path, help="keep the benchmark's JSON output here")
+    parser.add_argument("--no-run", action="store_true", help="write OUT from the JSON of --json, without running")
     args = parser.parse_args()
-    if not os.access(args.bench, os.X_OK):
+    if args.no_run and not args.json:
+        sys.exit("point_sets.py: --no-run needs --json")
+    if not args.no_run and not os.access(args.bench, os.X_OK):
         sys.exit(f"point_sets.py: no executable {args.bench} (build the target bench_point_sets)")
 
     with tempfile.TemporaryDirectory() as work:
-        out = Path(work) / "points.json"
-        subprocess.run([str(args.bench), "--points", str(args.points), "--repetitions", str(args.repetitions),
-                        f"--benchmark_out={out}", "--benchmark_out_format=json"], check=True)
+        out = args.json or Path(work) / "points.json"
+        if not args.no_run:
+            subprocess.run([str(args.bench), "--points", str(args.points), "--repetitions", str(args.repetitions),
+                            f"--benchmark_out={out}", "--benchmark_out_format=json"], check=True)
         runs, context = best_runs(out)
 
     def run(case, k, mode):
@@ -140,11 +145,11 @@ def main():
                          fmt(r.get("h_rms"), ".4g") if "h_rms" in r else "",
                          fmt(r.get("not_estimable")) if "not_estimable" in r else ""])
         lines += table(["case", "seq ns/point", "par ns/point", "speed-up", "heap bytes/point seq",
-                        "heap bytes/point par", "allocations/point", "H RMS", "not estimable"], rows)
+                        "heap bytes/point par", "allocations/point", "H RMS", "not estimable"], rows) + [""]
         ours, jet, search = ns("ours", k, "seq"), ns("cgal_jet", k, "seq"), ns("search", k, "seq")
         jet_search = ns("cgal_search", k, "seq")
         if ours and jet and search:
-            lines += ["", f"CGAL's jet / ours, one thread: {jet / ours:.1f}x (search included); our search is "
+            lines += [f"CGAL's jet / ours, one thread: {jet / ours:.1f}x (search included); our search is "
                           f"{100 * search / ours:.0f}% of our time, CGAL's {100 * jet_search / jet:.0f}% of the jet's. "
                           f"Our H RMS is {run('ours', k, 'seq')['h_rms'] / run('cgal_jet', k, 'seq')['h_rms']:.2f} "
                           "times the jet's (H averages 1/(2r) = 1.25 over the torus).",
