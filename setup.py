@@ -22,7 +22,8 @@ os.chdir(ROOT)
 with open("CMakeLists.txt", encoding="utf-8") as cmake:
     VERSION = re.search(r"project\(CGAL_Curvature_estimation VERSION ([0-9.]+)", cmake.read()).group(1)
 
-TOOL_PARTS = ["command_line", "input_files", "registry", "soup_repair", "surface_estimation", "tetrahedral"]
+TOOL_PARTS = ["command_line", "input_files", "point_set_estimation", "registry", "soup_repair", "surface_estimation",
+              "tetrahedral"]
 
 
 def pkg_config(*arguments):

@@ -94,21 +94,6 @@ std::vector<double> exact_H(const std::vector<ce_test::Exact_curvature>& exact)
   return H;
 }
 
-// Uniformly random points on the torus (R, r), with their exact curvature.
-void torus_samples(std::size_t n, std::uint32_t seed, std::vector<Eigen::Vector3d>& points,
-                   std::vector<ce_test::Exact_curvature>& exact)
-{
-  const double R = 1, r = 0.4;
-  std::mt19937 gen(seed);
-  while (points.size() < n) { // uniform by area: accept with probability (R + r cos v) / (R + r)
-    const double u = ce_test::uniform(gen, 0, 2 * ce_test::pi), v = ce_test::uniform(gen, 0, 2 * ce_test::pi);
-    if (ce_test::uniform(gen, 0, R + r) > R + r * std::cos(v))
-      continue;
-    points.push_back(ce_test::torus_point(R, r, u, v));
-    exact.push_back(ce_test::torus_curvature(R, r, u, v));
-  }
-}
-
 // The same ball about each vertex of a mesh and about each point of its vertex set: the point-set fit's H RMS is
 // within 1.2 times the mesh fit's of the same degree.
 TEST(PointSetCurvatures, WithinTheMeshFitOverTheSameBall)
@@ -212,7 +197,7 @@ TEST(PointSetCurvatures, InvariantUnderRigidMotionsAndScaling)
 {
   std::vector<Eigen::Vector3d> points;
   std::vector<ce_test::Exact_curvature> exact;
-  torus_samples(3000, 4, points, exact);
+  ce_test::torus_samples(3000, 4, points, exact);
   const Eigen::Matrix3d rotation =
     (Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()) * Eigen::AngleAxisd(2.1, Eigen::Vector3d::UnitZ()))
       .toRotationMatrix();
@@ -236,7 +221,7 @@ TEST(PointSetCurvatures, OrientationIsConsistent)
 {
   std::vector<Eigen::Vector3d> points;
   std::vector<ce_test::Exact_curvature> exact;
-  torus_samples(20000, 8, points, exact);
+  ce_test::torus_samples(20000, 8, points, exact);
   const Outputs torus = run(points, params::default_values());
   std::size_t outward = 0;
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -548,7 +533,7 @@ TEST(PointSetCurvatures, ParallelEqualsSequential)
 {
   std::vector<Eigen::Vector3d> points;
   std::vector<ce_test::Exact_curvature> exact;
-  torus_samples(6000, 2, points, exact);
+  ce_test::torus_samples(6000, 2, points, exact);
   for (int degree = 2; degree <= 4; ++degree) {
     const Outputs a = run<CGAL::Sequential_tag>(points, params::fit_degree(degree));
     const Outputs b = run<CGAL::Parallel_if_available_tag>(points, params::fit_degree(degree));

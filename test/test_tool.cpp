@@ -1733,6 +1733,9 @@ std::string off_points(const Points& s)
   return "OFF\n" + std::to_string(s.points.size()) + " 0 0\n" + xyz(plain);
 }
 
+// NOFF without faces: a point and its normal a line.
+std::string noff_points(const Points& s) { return "NOFF\n" + std::to_string(s.points.size()) + " 0 0\n" + xyz(s); }
+
 Points without_normals(const Points& s) { return Points{s.points, {}}; }
 
 const Vec3 sphere_center = {1, -2, 0.5};
@@ -1757,7 +1760,8 @@ TEST_F(ToolTest, PointSetFormatsGiveTheSameRows)
   const std::vector<std::pair<std::string, std::string>> with = {{"six_columns.xyz", xyz(s)},
                                                                  {"points.pwn", xyz(s)},
                                                                  {"normals_ascii.ply", ascii_ply_points(s)},
-                                                                 {"normals_binary.ply", binary_ply_points(s)}};
+                                                                 {"normals_binary.ply", binary_ply_points(s)},
+                                                                 {"normals.off", noff_points(s)}};
   for (const auto* files : {&without, &with}) {
     std::vector<Row> first;
     for (const auto& [name, text] : *files) {
@@ -1783,17 +1787,21 @@ TEST_F(ToolTest, PointSetFormatsGiveTheSameRows)
   }
 }
 
-// Given normals orient the result: inward normals give H = -1/r.
+// Given normals orient the result (a .pwn's, a NOFF's): inward normals give H = -1/r.
 TEST_F(ToolTest, PointSetGivenNormalsSetTheSign)
 {
   Points s = sphere_points(2000, sphere_radius, sphere_center);
   for (Vec3& n : s.normals)
     for (double& c : n)
       c = -c;
-  const std::vector<Row> rows = csv(file("inward.pwn", xyz(s)), {}, point_set_csv_header);
-  ASSERT_EQ(rows.size(), s.points.size());
-  for (std::size_t i = 0; i < rows.size(); ++i)
-    EXPECT_NEAR(rows[i].values[2], -1 / sphere_radius, 0.05 / sphere_radius) << i;
+  for (const auto& [name, text] :
+       {std::pair<std::string, std::string>{"inward.pwn", xyz(s)}, {"inward.off", noff_points(s)}})
+  {
+    const std::vector<Row> rows = csv(file(name, text), {}, point_set_csv_header);
+    ASSERT_EQ(rows.size(), s.points.size()) << name;
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      EXPECT_NEAR(rows[i].values[2], -1 / sphere_radius, 0.05 / sphere_radius) << name << ", row " << i;
+  }
 }
 
 // Rows follow the file's order: the points in another order give the same rows in that order.
@@ -1975,6 +1983,8 @@ TEST_F(ToolTest, PointSetBadInput)
     {"truncated.off", "OFF\n21 0 0\n" + three},
     {"nan.off", "OFF\n21 0 0\n" + three + "0 nan 0\n"},
     {"no_points.off", "OFF\n0 0 0\n"},
+    {"noff_without_normals.off", "NOFF\n20 0 0\n" + three},
+    {"noff_nan_normal.off", "NOFF\n21 0 0\n" + six + "0 0 0 0 0 nan\n"},
   };
   for (const auto& [name, text] : bad)
     expect_rejected({file(name, text).string()}, name);

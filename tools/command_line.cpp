@@ -177,11 +177,12 @@ void print_usage(std::ostream& out)
          "tetrahedron is failed.\n"
          "\n"
          "Point sets. .xyz holds x y z or x y z nx ny nz a line, .pwn x y z nx ny nz; a PLY whose\n"
-         "header declares no faces (normals from nx, ny, nz) and an OFF of 0 faces are point sets\n"
-         "too. Normals of the file orient the result (all zero: ignored); without, the fitted\n"
-         "normals are oriented by a spanning-tree propagation, which the summary describes. CSV:\n"
-         "the surface header with nx,ny,nz (the unit normal the signs refer to) before status,\n"
-         "one row per point in the file's order. PLY: the points with these values, no faces.\n";
+         "header declares no faces (normals from nx, ny, nz) and an OFF of 0 faces (normals from\n"
+         "NOFF) are point sets too. Normals of the file orient the result (all zero: ignored);\n"
+         "without, the fitted normals are oriented by a spanning-tree propagation, which the summary\n"
+         "describes. CSV: the surface header with nx,ny,nz (the unit normal the signs refer to)\n"
+         "before status, one row per point in the file's order. PLY: the points with these values,\n"
+         "no faces.\n";
 }
 
 // Fails unless the method of `o` reads `setting`, which `flag` set.

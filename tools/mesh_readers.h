@@ -246,23 +246,29 @@ struct Polygon_soup_data
 // the normal, colour and texture coordinates the header announces), one face a line
 // (n, n indices from 0, then an optional colour of up to 4 values).
 // 4OFF, nOFF (other dimensions) and binary OFF are refused. Point3 is built from
-// {x, y, z}.
+// {x, y, z}. With `normals`, the normals of an N header (the three values after x y z)
+// are appended to it, one per vertex; other values are checked and skipped.
 template <typename Point3 = std::array<double, 3>>
-Polygon_soup_data<Point3> read_off(std::string_view text)
+Polygon_soup_data<Point3> read_off(std::string_view text, std::vector<std::array<double, 3>>* normals = nullptr)
 {
   Scanner in(text);
   std::string_view header = in.token("the OFF header");
   int extra_min = 0, extra_max = 0; // per-vertex values after x y z
   const auto prefix = [&](std::string_view p, int values_min, int values_max) {
-    if (header.substr(0, p.size()) == p) {
-      header.remove_prefix(p.size());
-      extra_min += values_min;
-      extra_max += values_max;
-    }
+    if (header.substr(0, p.size()) != p)
+      return false;
+    header.remove_prefix(p.size());
+    extra_min += values_min;
+    extra_max += values_max;
+    return true;
   };
   prefix("ST", 2, 2);
   prefix("C", 3, 4); // RGB or RGBA
-  prefix("N", 3, 3);
+  const bool read_normals = prefix("N", 3, 3) && normals != nullptr;
+  if (read_normals) { // they come first after x y z, before a colour and texture coordinates
+    extra_min -= 3;
+    extra_max -= 3;
+  }
   if (header != "OFF")
     in.fail("unsupported or missing OFF header (expected OFF, COFF, NOFF, STOFF or a combination)");
   if (in.more_on_line()) {
@@ -277,12 +283,19 @@ Polygon_soup_data<Point3> read_off(std::string_view text)
 
   Polygon_soup_data<Point3> soup;
   soup.points.reserve(vertices);
+  if (read_normals)
+    normals->reserve(normals->size() + vertices);
   for (std::size_t v = 0; v < vertices; ++v) {
     const auto what = [v] { return "vertex " + std::to_string(v); };
     const auto coordinate = [&] { return "a coordinate of " + what(); };
     const double x = in.real(coordinate);
     const double y = in.real(coordinate);
     const double z = in.real(coordinate);
+    if (read_normals) {
+      const auto normal = [&] { return "the normal of " + what(); };
+      const double nx = in.real(normal), ny = in.real(normal), nz = in.real(normal);
+      normals->push_back({nx, ny, nz});
+    }
     in.skip_numbers_on_line(what, extra_min, extra_max);
     soup.points.push_back(Point3{x, y, z});
   }

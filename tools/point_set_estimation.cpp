@@ -53,10 +53,11 @@ Point_set_row Point_set_estimates::operator[](std::size_t i) const
           {normal[i].x(), normal[i].y(), normal[i].z()}};
 }
 
-Point_set_estimates estimate_point_set(const Options& o, const Point_set_input& input)
+void run_point_set_curvatures(const std::vector<Point>& points, const std::vector<Kernel::Vector_3>& normals,
+                              std::size_t neighbors, std::optional<double> radius, int degree, bool unsigned_curvatures,
+                              int threads, Point_set_estimates& e)
 {
-  const std::size_t n = input.points.size();
-  Point_set_estimates e;
+  const std::size_t n = points.size();
   e.H.assign(n, 0);
   e.K.assign(n, 0);
   e.pcd.resize(n);
@@ -64,7 +65,39 @@ Point_set_estimates estimate_point_set(const Options& o, const Point_set_input& 
   e.normal.resize(n);
   e.component.assign(n, std::size_t(-1));
   e.confidence.assign(n, 0);
-  e.given_normals = !input.normals.empty();
+  e.given_normals = !normals.empty();
+  std::vector<std::size_t> indices(n);
+  std::iota(indices.begin(), indices.end(), std::size_t(0));
+  const auto base = CE::parameters::point_map(CGAL::make_property_map(points))
+                      .vertex_mean_curvature_map(CGAL::make_property_map(e.H))
+                      .vertex_Gaussian_curvature_map(CGAL::make_property_map(e.K))
+                      .vertex_principal_curvatures_and_directions_map(CGAL::make_property_map(e.pcd))
+                      .vertex_estimation_status_map(CGAL::make_property_map(e.status))
+                      .estimated_normal_map(CGAL::make_property_map(e.normal))
+                      .orientation_component_map(CGAL::make_property_map(e.component))
+                      .orientation_confidence_map(CGAL::make_property_map(e.confidence))
+                      .fit_degree(degree)
+                      .unsigned_curvatures(unsigned_curvatures);
+  const auto run = [&](const auto& np) {
+    e.seconds = timed_estimate(
+      [&] { with_threads(threads, [&](auto tag) { CE::point_set_curvatures<decltype(tag)>(indices, np); }); });
+  };
+  const auto with_neighborhood = [&](const auto& np) {
+    if (radius)
+      run(np.neighbor_radius(*radius));
+    else
+      run(np.number_of_neighbors(neighbors));
+  };
+  if (e.given_normals)
+    with_neighborhood(base.normal_map(CGAL::make_property_map(normals)));
+  else
+    with_neighborhood(base);
+}
+
+Point_set_estimates estimate_point_set(const Options& o, const Point_set_input& input)
+{
+  const std::size_t n = input.points.size();
+  Point_set_estimates e;
   const int degree = o.fit_degree.value_or(integer_range(Setting::fit_degree).default_value);
   if (o.radius) {
     std::vector<Eigen::Vector3d> coordinates;
@@ -82,32 +115,8 @@ Point_set_estimates estimate_point_set(const Options& o, const Point_set_input& 
   } else {
     e.neighbors = o.neighbors ? std::size_t(*o.neighbors) : CE::internal::default_point_set_neighbors(degree);
   }
-
-  std::vector<std::size_t> indices(n);
-  std::iota(indices.begin(), indices.end(), std::size_t(0));
-  const auto base = CE::parameters::point_map(CGAL::make_property_map(input.points))
-                      .vertex_mean_curvature_map(CGAL::make_property_map(e.H))
-                      .vertex_Gaussian_curvature_map(CGAL::make_property_map(e.K))
-                      .vertex_principal_curvatures_and_directions_map(CGAL::make_property_map(e.pcd))
-                      .vertex_estimation_status_map(CGAL::make_property_map(e.status))
-                      .estimated_normal_map(CGAL::make_property_map(e.normal))
-                      .orientation_component_map(CGAL::make_property_map(e.component))
-                      .orientation_confidence_map(CGAL::make_property_map(e.confidence))
-                      .fit_degree(degree);
-  const auto run = [&](const auto& np) {
-    e.seconds = timed_estimate(
-      [&] { with_threads(o.threads, [&](auto tag) { CE::point_set_curvatures<decltype(tag)>(indices, np); }); });
-  };
-  const auto with_neighborhood = [&](const auto& np) {
-    if (o.radius)
-      run(np.neighbor_radius(e.radius));
-    else
-      run(np.number_of_neighbors(e.neighbors));
-  };
-  if (e.given_normals)
-    with_neighborhood(base.normal_map(CGAL::make_property_map(input.normals)));
-  else
-    with_neighborhood(base);
+  run_point_set_curvatures(input.points, input.normals, e.neighbors,
+                           o.radius ? std::optional<double>(e.radius) : std::nullopt, degree, false, o.threads, e);
   return e;
 }
 

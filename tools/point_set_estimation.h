@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace ce_tool {
@@ -55,6 +56,14 @@ struct Point_set_estimates
 };
 
 Point_set_estimates estimate_point_set(const Options& o, const Point_set_input& input);
+
+// The library's point_set_curvatures on `points`, as the tool and the Python module call it:
+// `normals` none, or one per point (given, they orient the result); the `neighbors` nearest
+// points or, with a `radius`, the points within it; `threads` as with_threads takes it.
+// Fills e's values, statuses, normals, orientation and seconds.
+void run_point_set_curvatures(const std::vector<Point>& points, const std::vector<Kernel::Vector_3>& normals,
+                              std::size_t neighbors, std::optional<double> radius, int degree, bool unsigned_curvatures,
+                              int threads, Point_set_estimates& e);
 
 } // namespace ce_tool
 

@@ -115,9 +115,9 @@ std::optional<Point_set_input> read_point_set_input(const std::string& path)
     return checked(path, read_ply_points(path, header.normals));
   }
   if (ext == ".off" && off_declares_no_faces(start_of(path)).value_or(false)) {
-    Point_set_input input;
-    input.points = read_strictly(path, [](std::string_view text) { return read_off<Point>(text); }).points;
-    return checked(path, std::move(input));
+    Point_set_data data;
+    data.points = read_strictly(path, [&](std::string_view text) { return read_off(text, &data.normals); }).points;
+    return checked(path, from_arrays(data));
   }
   return std::nullopt;
 }

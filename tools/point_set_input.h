@@ -24,7 +24,7 @@ struct Point_set_input
 // The point set of the file at `path` if it is one: .xyz and .pwn (strict readers of
 // point_set_readers.h), a PLY whose header declares no faces (CGAL's reader after
 // check_ply_header, with normals where the vertices have nx, ny and nz), an OFF that
-// declares 0 faces (the strict OFF reader; normals of NOFF are not read). nullopt for
+// declares 0 faces (the strict OFF reader, with the normals of NOFF). nullopt for
 // other files, which are meshes. Bad input: a Tool_error, as for meshes.
 std::optional<Point_set_input> read_point_set_input(const std::string& path);
 

@@ -4,13 +4,11 @@
 #include "arrays.h"
 
 #include "kernel.h"
-#include "registry.h"
+#include "point_set_estimation.h"
 
 #include <CGAL/Curvature_estimation/point_set_curvatures.h>
-#include <CGAL/property_map.h>
 
 #include <cstdint>
-#include <numeric>
 #include <string>
 #include <vector>
 
@@ -44,53 +42,30 @@ py::tuple point_set_curvatures(const py::handle& points, std::optional<long long
       given.emplace_back(values.at(i, 0), values.at(i, 1), values.at(i, 2));
   }
 
-  std::vector<std::size_t> indices(n);
-  std::iota(indices.begin(), indices.end(), std::size_t(0));
-  std::vector<double> H(n), K(n);
-  std::vector<CE::Principal_curvatures_and_directions<Kernel>> pcd(n);
-  std::vector<CE::Estimation_status> status(n, CE::Estimation_status::not_estimable);
-  std::vector<Kernel::Vector_3> normal(n);
+  ce_tool::Point_set_estimates e;
   {
     py::gil_scoped_release release;
-    const auto base = CE::parameters::point_map(CGAL::make_property_map(p))
-                        .vertex_mean_curvature_map(CGAL::make_property_map(H))
-                        .vertex_Gaussian_curvature_map(CGAL::make_property_map(K))
-                        .vertex_principal_curvatures_and_directions_map(CGAL::make_property_map(pcd))
-                        .vertex_estimation_status_map(CGAL::make_property_map(status))
-                        .estimated_normal_map(CGAL::make_property_map(normal))
-                        .fit_degree(fit_degree)
-                        .unsigned_curvatures(unsigned_curvatures);
-    const auto run = [&](const auto& np) {
-      ce_tool::with_threads(threads, [&](auto tag) { CE::point_set_curvatures<decltype(tag)>(indices, np); });
-    };
     // The library's default number_of_neighbors, passed as such: one instantiation fewer.
-    const auto with_neighborhood = [&](const auto& np) {
-      if (neighbor_radius)
-        run(np.neighbor_radius(*neighbor_radius));
-      else
-        run(np.number_of_neighbors(number_of_neighbors ? std::size_t(*number_of_neighbors)
-                                                       : CE::internal::default_point_set_neighbors(fit_degree)));
-    };
-    if (given.empty())
-      with_neighborhood(base);
-    else
-      with_neighborhood(base.normal_map(CGAL::make_property_map(given)));
+    ce_tool::run_point_set_curvatures(p, given,
+                                      number_of_neighbors ? std::size_t(*number_of_neighbors)
+                                                          : CE::internal::default_point_set_neighbors(fit_degree),
+                                      neighbor_radius, fit_degree, unsigned_curvatures, threads, e);
   }
 
   auto k_max = new_array(n), k_min = new_array(n), mean = new_array(n), gaussian = new_array(n);
   auto d_max = new_array(n, 3), d_min = new_array(n, 3), normals_out = new_array(n, 3);
   py::array_t<std::uint8_t> status_out(static_cast<py::ssize_t>(n));
   for (std::size_t i = 0; i < n; ++i) {
-    k_max.mutable_at(i) = pcd[i].max_curvature;
-    k_min.mutable_at(i) = pcd[i].min_curvature;
-    mean.mutable_at(i) = H[i];
-    gaussian.mutable_at(i) = K[i];
+    k_max.mutable_at(i) = e.pcd[i].max_curvature;
+    k_min.mutable_at(i) = e.pcd[i].min_curvature;
+    mean.mutable_at(i) = e.H[i];
+    gaussian.mutable_at(i) = e.K[i];
     for (int c = 0; c < 3; ++c) {
-      d_max.mutable_at(i, c) = pcd[i].max_direction[c];
-      d_min.mutable_at(i, c) = pcd[i].min_direction[c];
-      normals_out.mutable_at(i, c) = normal[i][c];
+      d_max.mutable_at(i, c) = e.pcd[i].max_direction[c];
+      d_min.mutable_at(i, c) = e.pcd[i].min_direction[c];
+      normals_out.mutable_at(i, c) = e.normal[i][c];
     }
-    status_out.mutable_at(i) = static_cast<std::uint8_t>(status[i]);
+    status_out.mutable_at(i) = static_cast<std::uint8_t>(e.status[i]);
   }
   return py::make_tuple(k_max, k_min, mean, gaussian, d_max, d_min, status_out, normals_out);
 }

@@ -302,6 +302,22 @@ inline Exact_curvature torus_curvature_at(double R, double r, const Eigen::Vecto
   return torus_curvature(R, r, u, v);
 }
 
+/// n points uniformly random by area on the torus (R, r) = (1, 0.4), appended to `points`, with their
+/// exact curvature appended to `exact`. Deterministic given the seed.
+inline void torus_samples(std::size_t n, std::uint32_t seed, std::vector<Eigen::Vector3d>& points,
+                          std::vector<Exact_curvature>& exact)
+{
+  const double R = 1, r = 0.4;
+  std::mt19937 gen(seed);
+  while (points.size() < n) { // uniform by area: accept with probability (R + r cos v) / (R + r)
+    const double u = uniform(gen, 0, 2 * pi), v = uniform(gen, 0, 2 * pi);
+    if (uniform(gen, 0, R + r) > R + r * std::cos(v))
+      continue;
+    points.push_back(torus_point(R, r, u, v));
+    exact.push_back(torus_curvature(R, r, u, v));
+  }
+}
+
 /// Exact curvature of the implicit surface F = 0 at a point where grad F = `gradient` (non-zero)
 /// and the Hessian of F is `hessian`; the normal is gradient/|gradient| and the shape operator is
 /// the Hessian restricted to the tangent plane, divided by |gradient|. With this sign the sphere

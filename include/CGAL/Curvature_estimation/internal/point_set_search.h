@@ -5,12 +5,11 @@
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_POINT_SET_SEARCH_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_POINT_SET_SEARCH_H
 
+#include <CGAL/Euclidean_distance.h>
 #include <CGAL/Fuzzy_sphere.h>
+#include <CGAL/Kd_tree.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/property_map.h>
 
 #include <boost/function_output_iterator.hpp>
 
@@ -35,15 +34,13 @@ class Point_set_search
 public:
   using Index = std::uint32_t;
   using Kernel = CGAL::Simple_cartesian<double>;
-  using Point_3 = Kernel::Point_3;
   using Found = std::vector<std::pair<double, Index>>; // squared distance, index
 
   template <typename ConcurrencyTag>
   Point_set_search(const std::vector<Eigen::Vector3d>& points, ConcurrencyTag)
       : order_(spatial_order(points))
-      , map_{&points_}
-      , tree_(Splitter(), Traits(map_))
-      , distance_(map_)
+      , tree_(Splitter(), Traits{&points_})
+      , distance_(Traits{&points_})
   {
     points_.reserve(points.size());
     for (Index i : order_)
@@ -70,7 +67,7 @@ public:
   void nearest(Index i, std::size_t count, Found& found) const
   {
     found.clear();
-    const Search search(tree_, point_3(i), static_cast<unsigned>(count + 1), 0, true, distance_);
+    const Search search(tree_, i, static_cast<unsigned>(count + 1), 0, true, distance_);
     for (const auto& neighbor : search)
       if (neighbor.first != i)
         found.emplace_back(neighbor.second, neighbor.first);
@@ -83,28 +80,32 @@ public:
   void within(Index i, double radius, Found& found) const
   {
     found.clear();
-    tree_.search(boost::make_function_output_iterator(Add{&points_, i, &found}),
-                 Sphere(point_3(i), radius, 0, tree_.traits()));
+    tree_.search(boost::make_function_output_iterator(Add{&points_, i, &found}), Sphere(i, radius, 0, tree_.traits()));
   }
 
 private:
-  struct Point_map
+  // CGAL's search traits over the indices of points_, whose coordinates are read in
+  // place: Search_traits_adapter over a map that returns points by value copies each
+  // point it reads to the heap (two allocations a point visited, most of a query's time).
+  struct Traits
   {
-    using key_type = Index;
-    using value_type = Point_3;
-    using reference = Point_3;
-    using category = boost::readable_property_map_tag;
-    const std::vector<Eigen::Vector3d>* points;
-    friend Point_3 get(const Point_map& map, Index i)
+    using Dimension = CGAL::Dimension_tag<3>;
+    using FT = double;
+    using Point_d = Index;
+    using Cartesian_const_iterator_d = const double*;
+    using Iso_box_d = Kernel::Iso_cuboid_3; // for the concept: no box queries here
+    struct Construct_cartesian_const_iterator_d
     {
-      const Eigen::Vector3d& p = (*map.points)[i];
-      return Point_3(p.x(), p.y(), p.z());
-    }
+      using result_type = const double*;
+      const std::vector<Eigen::Vector3d>* points;
+      const double* operator()(Index i) const { return (*points)[i].data(); }
+      const double* operator()(Index i, int) const { return (*points)[i].data() + 3; }
+    };
+    const std::vector<Eigen::Vector3d>* points = nullptr;
+    Construct_cartesian_const_iterator_d construct_cartesian_const_iterator_d_object() const { return {points}; }
   };
-  using Base = CGAL::Search_traits_3<Kernel>;
-  using Traits = CGAL::Search_traits_adapter<Index, Point_map, Base>;
   using Splitter = CGAL::Sliding_midpoint<Traits>;
-  using Distance = CGAL::Distance_adapter<Index, Point_map, CGAL::Euclidean_distance<Base>>;
+  using Distance = CGAL::Euclidean_distance<Traits>;
   using Tree = CGAL::Kd_tree<Traits, Splitter, CGAL::Tag_true, CGAL::Tag_true>;
   using Search = CGAL::Orthogonal_k_neighbor_search<Traits, Distance, Splitter, Tree>;
   using Sphere = CGAL::Fuzzy_sphere<Traits>;
@@ -120,8 +121,6 @@ private:
         found->emplace_back(((*points)[j] - (*points)[center]).squaredNorm(), j);
     }
   };
-
-  Point_3 point_3(Index i) const { return get(map_, i); }
 
   static std::vector<Index> spatial_order(const std::vector<Eigen::Vector3d>& points)
   {
@@ -155,7 +154,6 @@ private:
 
   std::vector<Index> order_;
   std::vector<Eigen::Vector3d> points_;
-  Point_map map_;
   Tree tree_;
   Distance distance_;
   std::size_t finite_ = 0;
