@@ -3,15 +3,20 @@
 
 #include "arrays.h"
 
+#include "command_line.h"
 #include "kernel.h"
+#include "point_set_estimation.h"
 #include "registry.h"
 
 #include <CGAL/Curvature_estimation/point_set_curvatures.h>
 #include <CGAL/property_map.h>
 
 #include <cstdint>
+#include <limits>
 #include <numeric>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ce_python {
@@ -20,11 +25,15 @@ using ce_tool::Kernel;
 namespace CE = CGAL::Curvature_estimation;
 
 py::tuple point_set_curvatures(const py::handle& points, std::optional<long long> number_of_neighbors,
-                               std::optional<double> neighbor_radius, int fit_degree, const py::object& normals,
-                               bool unsigned_curvatures, int threads)
+                               std::optional<double> neighbor_radius, const std::optional<std::string>& radius,
+                               int fit_degree, const py::object& normals, bool unsigned_curvatures, int threads)
 {
   if (number_of_neighbors && neighbor_radius)
     refuse("give number_of_neighbors or neighbor_radius, not both");
+  if (radius && neighbor_radius)
+    refuse("give neighbor_radius or radius, not both");
+  const std::optional<ce_tool::Radius_range> range =
+    radius ? std::optional<ce_tool::Radius_range>(ce_tool::parse_radius_range("radius", *radius)) : std::nullopt;
   if (number_of_neighbors && *number_of_neighbors < 0)
     refuse("number_of_neighbors must be at least 3, got " + std::to_string(*number_of_neighbors));
   threads = thread_count(threads);
@@ -50,8 +59,13 @@ py::tuple point_set_curvatures(const py::handle& points, std::optional<long long
   std::vector<CE::Principal_curvatures_and_directions<Kernel>> pcd(n);
   std::vector<CE::Estimation_status> status(n, CE::Estimation_status::not_estimable);
   std::vector<Kernel::Vector_3> normal(n);
+  std::vector<double> chosen_radius(range ? n : 0), noise(range ? n : 0);
   {
     py::gil_scoped_release release;
+    const std::optional<std::pair<double, double>> bounds =
+      range
+        ? std::optional<std::pair<double, double>>(ce_tool::point_set_radius_range(*range, ce_tool::mean_spacing(p)))
+        : std::nullopt;
     const auto base = CE::parameters::point_map(CGAL::make_property_map(p))
                         .vertex_mean_curvature_map(CGAL::make_property_map(H))
                         .vertex_Gaussian_curvature_map(CGAL::make_property_map(K))
@@ -65,11 +79,17 @@ py::tuple point_set_curvatures(const py::handle& points, std::optional<long long
     };
     // The library's default number_of_neighbors, passed as such: one instantiation fewer.
     const auto with_neighborhood = [&](const auto& np) {
+      const std::size_t k =
+        number_of_neighbors ? std::size_t(*number_of_neighbors) : CE::internal::default_point_set_neighbors(fit_degree);
       if (neighbor_radius)
         run(np.neighbor_radius(*neighbor_radius));
+      else if (bounds)
+        run(np.number_of_neighbors(k)
+              .ball_radius_range(*bounds)
+              .vertex_ball_radius_map(CGAL::make_property_map(chosen_radius))
+              .vertex_noise_map(CGAL::make_property_map(noise)));
       else
-        run(np.number_of_neighbors(number_of_neighbors ? std::size_t(*number_of_neighbors)
-                                                       : CE::internal::default_point_set_neighbors(fit_degree)));
+        run(np.number_of_neighbors(k));
     };
     if (given.empty())
       with_neighborhood(base);
@@ -92,7 +112,17 @@ py::tuple point_set_curvatures(const py::handle& points, std::optional<long long
     }
     status_out.mutable_at(i) = static_cast<std::uint8_t>(status[i]);
   }
-  return py::make_tuple(k_max, k_min, mean, gaussian, d_max, d_min, status_out, normals_out);
+  py::object selection = py::none();
+  if (range) {
+    auto radius_out = new_array(n), noise_out = new_array(n);
+    for (std::size_t i = 0; i < n; ++i) { // NaN where not estimated, as the tool's rows
+      const bool estimated = status[i] != CE::Estimation_status::not_estimable;
+      radius_out.mutable_at(i) = estimated ? chosen_radius[i] : std::numeric_limits<double>::quiet_NaN();
+      noise_out.mutable_at(i) = estimated ? noise[i] : std::numeric_limits<double>::quiet_NaN();
+    }
+    selection = py::make_tuple(radius_out, noise_out);
+  }
+  return py::make_tuple(k_max, k_min, mean, gaussian, d_max, d_min, status_out, normals_out, selection);
 }
 
 } // namespace ce_python
