@@ -150,7 +150,7 @@ def noisy(vertices, fraction, seed=2):
 @pytest.mark.parametrize("method, kwargs, options", [
     ("paraboloid", {"radius": "auto"}, ["--radius", "auto"]),
     ("paraboloid", {"radius": "auto:2x:8x", "fit_degree": 3}, ["--radius", "auto:2x:8x", "--fit-degree", 3]),
-    ("jet", {"radius": "auto:0.05:0.3"}, ["--radius", "auto:0.05:0.3"]),
+    ("jet", {"radius": "auto:0.05:0.6"}, ["--radius", "auto:0.05:0.6"]),
 ], ids=["auto", "auto-2x-8x-degree-3", "jet-auto-units"])
 def test_auto_radius_on_a_noisy_torus(tmp_path, method, kwargs, options):
     """radius="auto": the tool's CSV with its radius and noise columns, bit for bit."""

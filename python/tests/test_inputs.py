@@ -114,7 +114,7 @@ def test_bad_parameters(mesh):
     refuses("radius must be a number or a string", ce.mesh_curvatures, v, f, radius=True)
     refuses("radius expects a length, auto, or auto:A:B", ce.mesh_curvatures, v, f, radius="auto:2x")
     refuses("radius auto:0x:2x expects a positive length", ce.mesh_curvatures, v, f, radius="auto:0x:2x")
-    refuses("^radius auto:A:B needs A <= B", ce.mesh_curvatures, v, f, radius="auto:4x:2x")
+    refuses("radius auto:A:B needs A <= B", ce.mesh_curvatures, v, f, radius="auto:4x:2x")
     refuses("^radius auto applies to the .* methods only, not to 'taubin'$", ce.mesh_curvatures, v, f, "taubin",
             radius="auto")
     refuses("^radius and rings exclude each other", ce.mesh_curvatures, v, f, radius="auto", rings=2)
@@ -188,7 +188,7 @@ def test_bad_point_sets():
     refuses("radius must be 'auto' or 'auto:A:B'", f, points, radius=0.5)
     refuses("radius must be 'auto' or 'auto:A:B'", f, points, radius="2x")
     refuses("radius expects a length, auto, or auto:A:B", f, points, radius="auto:")
-    refuses("^radius auto:A:B needs A <= B: here A is .* in the points' units$", f, points, radius="auto:8x:2x")
+    refuses("radius auto:A:B needs A <= B: here A is .* in the points' units$", f, points, radius="auto:8x:2x")
     refuses("give neighbor_radius or radius, not both", f, points, neighbor_radius=1.0, radius="auto")
 
 
