@@ -1898,10 +1898,9 @@ TEST_F(ToolTest, PointSetSummary)
   EXPECT_NE(zeros.out.find("normals: the file's are all zero, ignored; fitted"), std::string::npos) << zeros.out;
 }
 
-// --radius Nx is N mean distances to the nearest neighbor (computed here by brute force).
-TEST_F(ToolTest, PointSetRadiusInMeanSpacings)
+// The mean distance to the nearest neighbor, by brute force.
+double brute_force_mean_spacing(const Points& s)
 {
-  const Points s = without_normals(sphere_points(600, sphere_radius, sphere_center));
   double sum = 0;
   for (std::size_t i = 0; i < s.points.size(); ++i) {
     double nearest = std::numeric_limits<double>::infinity();
@@ -1914,7 +1913,14 @@ TEST_F(ToolTest, PointSetRadiusInMeanSpacings)
       }
     sum += nearest;
   }
-  const double spacing = sum / double(s.points.size());
+  return sum / double(s.points.size());
+}
+
+// --radius Nx is N mean distances to the nearest neighbor (computed here by brute force).
+TEST_F(ToolTest, PointSetRadiusInMeanSpacings)
+{
+  const Points s = without_normals(sphere_points(600, sphere_radius, sphere_center));
+  const double spacing = brute_force_mean_spacing(s);
   const fs::path p = file("sphere.xyz", xyz(s));
   const Result r = run({"--radius", "3x", p.string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -1931,6 +1937,142 @@ TEST_F(ToolTest, PointSetRadiusInMeanSpacings)
   ASSERT_EQ(rows.size(), s.points.size());
   for (std::size_t i = 0; i < rows.size(); ++i)
     EXPECT_NEAR(rows[i].values[2], 1 / sphere_radius, 0.05 / sphere_radius) << i;
+}
+
+const char* const point_set_auto_radius_header =
+  "k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,nx,ny,nz,radius,noise,status";
+
+// --radius auto on a point set: 2000 points of the sphere moved along the radius by Gaussian noise of 10% of the
+// mean distance to the nearest neighbor.
+class PointSetAutoRadiusTest : public RadiusTest
+{
+protected:
+  Points noisy;
+  double spacing = 0, sigma = 0;
+  fs::path path;
+
+  void SetUp() override
+  {
+    RadiusTest::SetUp();
+    if (IsSkipped())
+      return;
+    noisy = without_normals(sphere_points(2000, sphere_radius, sphere_center));
+    sigma = 0.1 * brute_force_mean_spacing(noisy);
+    std::mt19937 gen(3);
+    for (Vec3& p : noisy.points) {
+      const double moved = 1 + sigma * ce_test::standard_normal(gen) / sphere_radius;
+      for (int c = 0; c < 3; ++c)
+        p[c] = sphere_center[c] + moved * (p[c] - sphere_center[c]);
+    }
+    spacing = brute_force_mean_spacing(noisy);
+    path = file("noisy_sphere.xyz", xyz(noisy));
+  }
+
+  double H_rms(const std::vector<Row>& rows) const
+  {
+    double sum = 0;
+    for (const Row& r : rows) {
+      EXPECT_NE(r.status, "failed");
+      sum += (r.values[2] - 1 / sphere_radius) * (r.values[2] - 1 / sphere_radius);
+    }
+    return std::sqrt(sum / double(rows.size()));
+  }
+};
+
+// The radius and noise columns: finite on every row, the radius within the default range 2x to 32x or the 16 nearest
+// points' (kept on clean data), the noise's median that of the noise added, H closer to the exact value than the
+// 16 nearest points give it.
+TEST_F(PointSetAutoRadiusTest, RadiusAndNoiseColumns)
+{
+  const std::vector<Row> chosen = csv(path, {"--radius", "auto"}, point_set_auto_radius_header),
+                         nearest = csv(path, {}, point_set_csv_header);
+  ASSERT_EQ(chosen.size(), noisy.points.size());
+  ASSERT_EQ(nearest.size(), noisy.points.size());
+  std::vector<double> radii, noise;
+  for (const Row& r : chosen) {
+    ASSERT_TRUE(std::isfinite(r.values[13]) && std::isfinite(r.values[14]));
+    radii.push_back(r.values[13]);
+    noise.push_back(r.values[14]);
+  }
+  const double auto_rms = H_rms(chosen), nearest_rms = H_rms(nearest);
+  std::cout << "noisy sphere points, H RMS: 16 nearest " << nearest_rms << ", --radius auto " << auto_rms
+            << "; median radius " << median(radii) / spacing << " mean spacings, median noise " << median(noise)
+            << " for sigma " << sigma << '\n';
+  EXPECT_LT(auto_rms, 0.5 * nearest_rms);
+  EXPECT_GT(median(noise), 0.7 * sigma);
+  EXPECT_LT(median(noise), 1.4 * sigma);
+  EXPECT_GE(*std::min_element(radii.begin(), radii.end()), spacing);
+  EXPECT_LE(*std::max_element(radii.begin(), radii.end()), 32 * spacing * (1 + 1e-9));
+}
+
+// The bounds in mean spacings and in the points' units give the same rows (to rounding: the spacing here is summed
+// in another order than the tool's).
+TEST_F(PointSetAutoRadiusTest, BoundsInSpacingsOrUnits)
+{
+  const std::vector<Row> in_spacings = csv(path, {"--radius", "auto:4x:16x"}, point_set_auto_radius_header),
+                         in_units =
+                           csv(path, {"--radius", "auto:" + exact_text(4 * spacing) + ":" + exact_text(16 * spacing)},
+                               point_set_auto_radius_header);
+  ASSERT_EQ(in_spacings.size(), noisy.points.size());
+  ASSERT_EQ(in_units.size(), noisy.points.size());
+  for (std::size_t i = 0; i < in_spacings.size(); ++i) {
+    EXPECT_EQ(in_spacings[i].status, in_units[i].status) << "row " << i;
+    for (std::size_t c = 0; c < in_units[i].values.size(); ++c)
+      EXPECT_NEAR(in_spacings[i].values[c], in_units[i].values[c], 1e-9 * (1 + std::abs(in_units[i].values[c])))
+        << "row " << i << ", column " << c;
+  }
+}
+
+// The PLY holds radius and noise after nz, the CSV's values.
+TEST_F(PointSetAutoRadiusTest, PlyProperties)
+{
+  const fs::path output = dir / "auto.ply";
+  const Result r = run({"--radius", "auto", "-o", output.string(), path.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string text = read_text(output);
+  const std::size_t end = text.find("end_header\n");
+  ASSERT_NE(end, std::string::npos);
+  EXPECT_NE(text.find("property double nz\nproperty double radius\nproperty double noise\nproperty uchar status\n"),
+            std::string::npos)
+    << text.substr(0, end);
+  const std::size_t columns = 3 + 15, record = columns * sizeof(double) + 4;
+  ASSERT_EQ(text.size(), end + 11 + noisy.points.size() * record);
+  const std::vector<Row> rows = csv(path, {"--radius", "auto"}, point_set_auto_radius_header);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    double values[2];
+    std::memcpy(values, text.data() + end + 11 + i * record + 16 * sizeof(double), sizeof values);
+    EXPECT_EQ(values[0], rows[i].values[13]) << i;
+    EXPECT_EQ(values[1], rows[i].values[14]) << i;
+  }
+}
+
+// The summary: the range in mean spacings, and the quartiles of the chosen radius and of the noise.
+TEST_F(PointSetAutoRadiusTest, Summary)
+{
+  const Result r = run({"--radius", "auto", path.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* line : {"neighbors: the 16 nearest points, or the ball of the chosen radius\nradius range: ",
+                           " (2 to 32 mean distances to the nearest neighbor of ", "chosen radius: min ",
+                           "noise (standard deviation): min ", " (in mean distances to the nearest neighbor: "})
+    EXPECT_NE(r.out.find(line), std::string::npos) << line << " in\n" << r.out;
+  const std::size_t at = r.out.find(", median ", r.out.find("noise (standard deviation): "));
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const double noise = std::strtod(r.out.c_str() + at + 9, nullptr);
+  EXPECT_GT(noise, 0.7 * sigma) << r.out;
+  EXPECT_LT(noise, 1.4 * sigma) << r.out;
+  const Result nearest = run({path.string()});
+  ASSERT_EQ(nearest.exit_code, 0) << nearest.err;
+  for (const char* line : {"radius range", "chosen radius", "noise"})
+    EXPECT_EQ(nearest.out.find(line), std::string::npos) << line << " in\n" << nearest.out;
+}
+
+TEST_F(PointSetAutoRadiusTest, BadValuesAreRejected)
+{
+  expect_rejected_saying({"--radius", "auto:8x:2x", path.string()}, {"A <= B"});
+  expect_rejected_saying({"--radius", "auto:1:4x", path.string()}, {"A <= B", "the points' units"});
+  expect_rejected_saying({"--radius", "auto:0x:2x", path.string()}, {"--radius"});
+  expect_rejected_saying({"--radius", "auto", "--rings", "2", path.string()}, {"--rings"});
+  expect_rejected_saying({"-m", "taubin", "--radius", "auto", path.string()}, {"taubin"});
 }
 
 TEST_F(ToolTest, PointSetOptionsThatDoNotApply)

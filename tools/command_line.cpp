@@ -142,9 +142,11 @@ void print_usage(std::ostream& out)
                "choose the ball's radius per vertex between A and B (R or Nx each;\n"
                "default 1x:16x): where the estimated error of H is least, the noise estimated\n"
                "from the fits' residuals (the 1-ring's estimate kept on clean data); the CSV\n"
-               "and the PLY gain the radius and the noise per vertex; not with --rings\n"
+               "and the PLY gain the radius and the noise per vertex; not with --rings. On a\n"
+               "point set, Nx in mean distances to the nearest neighbor (default 2x:32x), the\n"
+               "K nearest points' estimate kept on clean data\n"
                "(" +
-                 join(readers(Setting::ball_radius_range), ", ") + "; surfaces only)");
+                 join(readers(Setting::ball_radius_range), ", ") + "; surfaces and point sets)");
   print_option(out, "    --neighbors K",
                std::to_string(min_neighbors) + ".." + std::to_string(max_neighbors) +
                  " (default 16, 32 or 64 at --fit-degree 2, 3 or 4): point sets only:\n"
@@ -181,7 +183,8 @@ void print_usage(std::ostream& out)
          "NOFF) are point sets too. Normals of the file orient the result (all zero: ignored);\n"
          "without, the fitted normals are oriented by a spanning-tree propagation, which the summary\n"
          "describes. CSV: the surface header with nx,ny,nz (the unit normal the signs refer to)\n"
-         "before status, one row per point in the file's order. PLY: the points with these values,\n"
+         "before status, one row per point in the file's order; with --radius auto, radius and\n"
+         "noise (in the points' units) between nz and status. PLY: the points with these values,\n"
          "no faces.\n";
 }
 
@@ -209,7 +212,8 @@ int parse_int(const std::string& option, const std::string& text, int min_value,
   return value;
 }
 
-// auto or auto:A:B, A and B as parse_radius takes them.
+} // namespace
+
 Radius_range parse_radius_range(const std::string& option, const std::string& text)
 {
   if (text == "auto")
@@ -221,8 +225,6 @@ Radius_range parse_radius_range(const std::string& option, const std::string& te
   const std::string what = option + " " + text;
   return {parse_radius(what, text.substr(5, colon - 5)), parse_radius(what, text.substr(colon + 1))};
 }
-
-} // namespace
 
 // R or Rx: a positive finite number, in mean edge lengths with the x.
 Radius parse_radius(const std::string& option, const std::string& text)
@@ -280,8 +282,6 @@ void check_options(const Options& o)
     check_read(o, "--radius auto", Setting::ball_radius_range, "");
     if (o.tetrahedral)
       fail("--radius auto is for surfaces: give tetrahedral input (.mesh) a radius", 2);
-    if (o.point_set)
-      fail("--radius auto is for meshes: give a point set --neighbors K or --radius R", 2);
   }
   if ((o.radius || o.radius_range) && o.rings)
     fail("--radius and --rings exclude each other: a neighborhood is a ball or rings", 2);

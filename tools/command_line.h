@@ -30,9 +30,13 @@ struct Radius
 struct Radius_range
 {
   Radius min, max;
+  bool given = true; // false for auto alone: the default of the input's kind
 };
-// --radius auto: the range of the manual's measurements of the selection.
-constexpr Radius_range default_radius_range{{1, true}, {16, true}};
+// --radius auto: the range of the manual's measurements of the selection, on meshes and
+// on point sets (in mean distances to the nearest neighbor: the balls of 2x to 32x hold
+// about as many random points as those of 1x to 16x hold vertices of a mesh).
+constexpr Radius_range default_radius_range{{1, true}, {16, true}, false};
+constexpr Radius_range default_point_set_radius_range{{2, true}, {32, true}, false};
 
 struct Options
 {
@@ -68,6 +72,10 @@ void read_as(Options& o, bool point_set);
 // --radius `text` (R, or Nx in mean edge lengths) of `option`: a positive finite number
 // (a Tool_error with code 2 otherwise).
 Radius parse_radius(const std::string& option, const std::string& text);
+
+// --radius `text` of `option`: auto, or auto:A:B with A and B as parse_radius takes
+// them (a Tool_error with code 2 otherwise).
+Radius_range parse_radius_range(const std::string& option, const std::string& text);
 
 // The options of argv, checked together (a Tool_error with code 2 otherwise);
 // nullopt when help was printed.

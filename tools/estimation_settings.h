@@ -17,6 +17,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace ce_tool {
 
@@ -56,6 +57,21 @@ inline double ball_radius(const Radius& radius, double mean_edge_length,
     fail(message.str(), 2);
   }
   return r;
+}
+
+// --radius auto[:A:B] in the input's units, the lengths in `unit` units for Ax and Bx
+// (`unit_name` names the unit in the message, `units` the input's units). Fails where
+// A > B.
+inline std::pair<double, double> radius_range(const Radius_range& range, double unit, const char* unit_name,
+                                              const char* units)
+{
+  const double min = ball_radius(range.min, unit, unit_name), max = ball_radius(range.max, unit, unit_name);
+  if (min > max) {
+    std::ostringstream message;
+    message << "--radius auto:A:B needs A <= B: here A is " << min << " and B " << max << " in " << units;
+    fail(message.str(), 2);
+  }
+  return {min, max};
 }
 
 // The number of vertices in the ball of a radius about a vertex, as the ball_radius

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace ce_tool {
@@ -35,7 +36,28 @@ double mean_spacing(const Search& search)
   return counted == 0 ? 0.0 : sum / double(counted);
 }
 
+std::vector<Eigen::Vector3d> coordinates_of(const std::vector<Point>& points)
+{
+  std::vector<Eigen::Vector3d> coordinates;
+  coordinates.reserve(points.size());
+  for (const Point& p : points)
+    coordinates.emplace_back(p.x(), p.y(), p.z());
+  return coordinates;
+}
+
+const char* const spacing_name = "the mean distance to the nearest neighbor";
+
 } // namespace
+
+double mean_spacing(const std::vector<Point>& points)
+{
+  return mean_spacing(Search(coordinates_of(points), CGAL::Sequential_tag()));
+}
+
+std::pair<double, double> point_set_radius_range(const Radius_range& range, double spacing)
+{
+  return radius_range(range.given ? range : default_point_set_radius_range, spacing, spacing_name, "the points' units");
+}
 
 Point_set_row Point_set_estimates::operator[](std::size_t i) const
 {
@@ -53,6 +75,13 @@ Point_set_row Point_set_estimates::operator[](std::size_t i) const
           {normal[i].x(), normal[i].y(), normal[i].z()}};
 }
 
+std::array<double, 2> Point_set_estimates::radius_and_noise(std::size_t i) const
+{
+  if (status[i] == CE::Estimation_status::not_estimable)
+    return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+  return {chosen_radius[i], noise[i]};
+}
+
 void run_point_set_curvatures(const std::vector<Point>& points, const std::vector<Kernel::Vector_3>& normals,
                               std::size_t neighbors, std::optional<double> radius, int degree, bool unsigned_curvatures,
                               int threads, Point_set_estimates& e)
@@ -65,6 +94,8 @@ void run_point_set_curvatures(const std::vector<Point>& points, const std::vecto
   e.normal.resize(n);
   e.component.assign(n, std::size_t(-1));
   e.confidence.assign(n, 0);
+  e.chosen_radius.assign(e.radius_range ? n : 0, 0);
+  e.noise.assign(e.radius_range ? n : 0, 0);
   e.given_normals = !normals.empty();
   std::vector<std::size_t> indices(n);
   std::iota(indices.begin(), indices.end(), std::size_t(0));
@@ -85,6 +116,11 @@ void run_point_set_curvatures(const std::vector<Point>& points, const std::vecto
   const auto with_neighborhood = [&](const auto& np) {
     if (radius)
       run(np.neighbor_radius(*radius));
+    else if (e.radius_range)
+      run(np.number_of_neighbors(neighbors)
+            .ball_radius_range(*e.radius_range)
+            .vertex_ball_radius_map(CGAL::make_property_map(e.chosen_radius))
+            .vertex_noise_map(CGAL::make_property_map(e.noise)));
     else
       run(np.number_of_neighbors(neighbors));
   };
@@ -100,13 +136,9 @@ Point_set_estimates estimate_point_set(const Options& o, const Point_set_input& 
   Point_set_estimates e;
   const int degree = o.fit_degree.value_or(integer_range(Setting::fit_degree).default_value);
   if (o.radius) {
-    std::vector<Eigen::Vector3d> coordinates;
-    coordinates.reserve(n);
-    for (const Point& p : input.points)
-      coordinates.emplace_back(p.x(), p.y(), p.z());
-    const Search search(coordinates, CGAL::Sequential_tag());
+    const Search search(coordinates_of(input.points), CGAL::Sequential_tag());
     e.mean_spacing = mean_spacing(search);
-    e.radius = ball_radius(*o.radius, e.mean_spacing, "the mean distance to the nearest neighbor");
+    e.radius = ball_radius(*o.radius, e.mean_spacing, spacing_name);
     Search::Found found;
     e.ball_size = mean_ball_size(n, [&](std::size_t i) {
       search.within(Search::Index(i), e.radius, found);
@@ -114,6 +146,10 @@ Point_set_estimates estimate_point_set(const Options& o, const Point_set_input& 
     });
   } else {
     e.neighbors = o.neighbors ? std::size_t(*o.neighbors) : CE::internal::default_point_set_neighbors(degree);
+    if (o.radius_range) {
+      e.mean_spacing = mean_spacing(input.points);
+      e.radius_range = point_set_radius_range(*o.radius_range, e.mean_spacing);
+    }
   }
   run_point_set_curvatures(input.points, input.normals, e.neighbors,
                            o.radius ? std::optional<double>(e.radius) : std::nullopt, degree, false, o.threads, e);

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Point-set estimation: the library's point_set_curvatures with the options'
-// neighborhood (--neighbors K, or --radius R|Nx with N times the mean distance to
-// the nearest neighbor) and fit degree, one row per point of the file.
+// neighborhood (--neighbors K, --radius R|Nx with N times the mean distance to the
+// nearest neighbor, or --radius auto[:A:B] with A and B so) and fit degree, one row
+// per point of the file.
 #ifndef CE_TOOLS_POINT_SET_ESTIMATION_H
 #define CE_TOOLS_POINT_SET_ESTIMATION_H
 
@@ -16,6 +17,7 @@
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace ce_tool {
@@ -50,20 +52,34 @@ struct Point_set_estimates
   // mean number of points within the radius (the point included); zeros without it.
   double radius = 0, mean_spacing = 0;
   Ball_size ball_size;
+  // With --radius auto (mean_spacing too): the range, and the radius chosen and the noise per point.
+  std::optional<std::pair<double, double>> radius_range;
+  std::vector<double> chosen_radius, noise;
 
   std::size_t size() const { return status.size(); }
   Point_set_row operator[](std::size_t i) const;
+  // With --radius auto: the chosen radius and the noise of point i; NaN where not estimated.
+  std::array<double, 2> radius_and_noise(std::size_t i) const;
 };
 
 Point_set_estimates estimate_point_set(const Options& o, const Point_set_input& input);
 
 // The library's point_set_curvatures on `points`, as the tool and the Python module call it:
 // `normals` none, or one per point (given, they orient the result); the `neighbors` nearest
-// points or, with a `radius`, the points within it; `threads` as with_threads takes it.
-// Fills e's values, statuses, normals, orientation and seconds.
+// points or, with a `radius`, the points within it; with e.radius_range set (points' units),
+// the radius chosen per point in that range from about the `neighbors` nearest; `threads` as
+// with_threads takes it. Fills e's values, statuses, normals, orientation and seconds, and
+// with e.radius_range its chosen_radius and noise.
 void run_point_set_curvatures(const std::vector<Point>& points, const std::vector<Kernel::Vector_3>& normals,
                               std::size_t neighbors, std::optional<double> radius, int degree, bool unsigned_curvatures,
                               int threads, Point_set_estimates& e);
+
+// The mean over the points of the distance to the nearest other point: the unit of Nx.
+double mean_spacing(const std::vector<Point>& points);
+
+// --radius auto[:A:B] on points of that mean spacing, in their units (auto alone:
+// default_point_set_radius_range). Fails where A > B.
+std::pair<double, double> point_set_radius_range(const Radius_range& range, double spacing);
 
 } // namespace ce_tool
 

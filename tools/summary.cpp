@@ -7,6 +7,7 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <utility>
 
 namespace ce_tool {
 
@@ -40,10 +41,11 @@ void print_ball(double radius, double mean_edge_length, const Ball_size& size, s
   std::cout << ")\n";
 }
 
-// The min, quartiles and max of `values` in mesh units and in units of `h`, with
-// `name`; `estimated`: the number of estimated vertices, which the line names where
-// some have no value.
-void print_quartiles(const char* name, std::vector<double> values, double h, std::size_t estimated)
+// The min, quartiles and max of `values` in the input's units and in units of `h`
+// (`units` names them), with `name`; `estimated`: the number of estimated vertices
+// (`items`), which the line names where some have no value.
+void print_quartiles(const char* name, std::vector<double> values, double h, const char* units, std::size_t estimated,
+                     const char* items)
 {
   if (values.empty()) {
     std::cout << name << ": no estimate\n";
@@ -56,23 +58,24 @@ void print_quartiles(const char* name, std::vector<double> values, double h, std
   std::cout << name << ": ";
   for (std::size_t k = 0; k < 5; ++k)
     std::cout << labels[k] << quantiles[k];
-  std::cout << " (in mean edge lengths:";
+  std::cout << " (in " << units << ':';
   for (std::size_t k = 0; k < 5; ++k)
     std::cout << (k == 0 ? " " : ", ") << quantiles[k] / h;
   std::cout << ')';
   if (values.size() < estimated)
-    std::cout << ", over " << values.size() << " of " << estimated << " estimated vertices";
+    std::cout << ", over " << values.size() << " of " << estimated << " estimated " << items;
   std::cout << '\n';
 }
 
 // --radius auto: the range, and the distributions of the chosen radius and of the
-// noise over the estimated vertices.
-void print_radius_selection(const Surface_estimates& rows)
+// noise over the estimated vertices (`items`); `h` the unit of Nx, `units` its name.
+template <typename Rows>
+void print_radius_selection(const Rows& rows, std::pair<double, double> range, double h, const char* units,
+                            const char* items)
 {
-  const auto [min, max] = rows.radius_selection->range;
-  const double h = rows.mean_edge_length;
-  std::cout << "radius range: " << min << " to " << max << " (" << min / h << " to " << max / h
-            << " mean edge lengths of " << h << ")\n";
+  const auto [min, max] = range;
+  std::cout << "radius range: " << min << " to " << max << " (" << min / h << " to " << max / h << ' ' << units
+            << " of " << h << ")\n";
   std::vector<double> radii, noise;
   std::size_t estimated = 0;
   for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -83,8 +86,8 @@ void print_radius_selection(const Surface_estimates& rows)
     if (std::isfinite(sigma))
       noise.push_back(sigma);
   }
-  print_quartiles("chosen radius", radii, h, estimated);
-  print_quartiles("noise (standard deviation)", noise, h, estimated);
+  print_quartiles("chosen radius", radii, h, units, estimated, items);
+  print_quartiles("noise (standard deviation)", noise, h, units, estimated, items);
 }
 
 // The summary's lines after the input's: time, ranges of H and K, status counts.
@@ -135,7 +138,7 @@ void print_surface_summary(const Options& o, const Soup& soup, const Mesh& mesh,
   if (rows.ball_radius > 0)
     print_ball(rows.ball_radius, rows.mean_edge_length, mean_ball_size(mesh, rows.ball_radius), num_vertices(mesh));
   if (rows.radius_selection)
-    print_radius_selection(rows);
+    print_radius_selection(rows, rows.radius_selection->range, rows.mean_edge_length, "mean edge lengths", "vertices");
   print_estimates(rows, num_vertices(mesh), rows.seconds);
 }
 
@@ -167,8 +170,11 @@ void print_point_set_summary(const Options& o, const Point_set_input& input, con
       std::cout << "; over " << e.ball_size.sampled << " evenly spaced points";
     std::cout << ")\n";
   } else {
-    std::cout << "neighbors: the " << e.neighbors << " nearest points\n";
+    std::cout << "neighbors: the " << e.neighbors << " nearest points"
+              << (e.radius_range ? ", or the ball of the chosen radius" : "") << '\n';
   }
+  if (e.radius_range)
+    print_radius_selection(e, *e.radius_range, e.mean_spacing, "mean distances to the nearest neighbor", "points");
   if (e.given_normals) {
     std::cout << "normals: the file's, which orient the result\n";
   } else {

@@ -9,7 +9,6 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <sstream>
 #include <utility>
 
 namespace ce_tool {
@@ -62,16 +61,9 @@ Surface_estimates estimate(const Options& o, Mesh& mesh, std::vector<V> file_to_
     settings.ball_radius = e.ball_radius;
   } else if (o.radius_range) {
     e.mean_edge_length = CE::mean_edge_length(mesh);
-    const double min = ball_radius(o.radius_range->min, e.mean_edge_length),
-                 max = ball_radius(o.radius_range->max, e.mean_edge_length);
-    if (min > max) {
-      std::ostringstream message;
-      message << "--radius auto:A:B needs A <= B: here A is " << min << " and B " << max << " in mesh units";
-      fail(message.str(), 2);
-    }
-    e.radius_selection = Settings::Radius_selection{{min, max},
-                                                    mesh.add_property_map<V, double>("v:ce_radius").first,
-                                                    mesh.add_property_map<V, double>("v:ce_noise").first};
+    e.radius_selection = Settings::Radius_selection{
+      radius_range(*o.radius_range, e.mean_edge_length, "the mean edge length of the mesh", "mesh units"),
+      mesh.add_property_map<V, double>("v:ce_radius").first, mesh.add_property_map<V, double>("v:ce_noise").first};
     settings.radius_selection = e.radius_selection;
   } else if (o.method->reads_setting(Setting::rings)) {
     settings.rings = rings(o);

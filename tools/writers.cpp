@@ -12,6 +12,8 @@
 #include <initializer_list>
 #include <limits>
 #include <tuple>
+#include <type_traits>
+#include <utility>
 
 namespace ce_tool {
 
@@ -167,27 +169,32 @@ void write_ply_of(Atomic_file& file, const char* what, const std::vector<Point>&
   }
 }
 
-// The rows of --radius auto: a Row (for the colours), with the radius and the noise after its values.
+// The rows of --radius auto: a row of `Rows` (for the colours), with the radius and the noise after its values.
+template <typename Rows>
 struct Rows_with_radius
 {
-  const Surface_estimates& rows;
+  const Rows& rows;
 
-  struct Values : Row
+  using Base = std::decay_t<decltype(std::declval<const Rows&>()[0])>;
+  static constexpr std::size_t columns = std::tuple_size<decltype(std::declval<Base>().values())>::value + 2;
+  struct Values : Base
   {
-    std::array<double, 12> all;
-    const std::array<double, 12>& values() const { return all; }
+    std::array<double, columns> all;
+    const std::array<double, columns>& values() const { return all; }
   };
   std::size_t size() const { return rows.size(); }
   Values operator[](std::size_t i) const
   {
     Values v{rows[i], {}};
-    const auto row = v.Row::values();
+    const auto row = v.Base::values();
     const auto radius_and_noise = rows.radius_and_noise(i);
     std::copy(row.begin(), row.end(), v.all.begin());
     std::copy(radius_and_noise.begin(), radius_and_noise.end(), v.all.begin() + row.size());
     return v;
   }
 };
+template <typename Rows>
+Rows_with_radius(const Rows&) -> Rows_with_radius<Rows>;
 
 } // namespace
 
@@ -222,16 +229,28 @@ void write_ply(Atomic_file& file, const Soup& soup, const Surface_estimates& row
 
 void write_point_set_csv(Atomic_file& out, const Point_set_estimates& rows)
 {
-  write_csv(out, "k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,nx,ny,nz,status", rows);
+  if (rows.radius_range)
+    write_csv(out,
+              "k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,nx,ny,nz,radius,noise,status",
+              Rows_with_radius{rows});
+  else
+    write_csv(out, "k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,nx,ny,nz,status", rows);
 }
 
 void write_point_set_ply(Atomic_file& file, const std::vector<Point>& points, const Point_set_estimates& rows,
                          Quantity q)
 {
-  write_ply_of(file, "the points of the input file, without faces", points, rows, q,
-               {"k_max", "k_min", "mean", "gaussian", "d_max_x", "d_max_y", "d_max_z", "d_min_x", "d_min_y", "d_min_z",
-                "nx", "ny", "nz"},
-               nullptr);
+  const char* what = "the points of the input file, without faces";
+  if (rows.radius_range)
+    write_ply_of(file, what, points, Rows_with_radius{rows}, q,
+                 {"k_max", "k_min", "mean", "gaussian", "d_max_x", "d_max_y", "d_max_z", "d_min_x", "d_min_y",
+                  "d_min_z", "nx", "ny", "nz", "radius", "noise"},
+                 nullptr);
+  else
+    write_ply_of(file, what, points, rows, q,
+                 {"k_max", "k_min", "mean", "gaussian", "d_max_x", "d_max_y", "d_max_z", "d_min_x", "d_min_y",
+                  "d_min_z", "nx", "ny", "nz"},
+                 nullptr);
 }
 
 } // namespace ce_tool

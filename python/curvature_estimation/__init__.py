@@ -21,7 +21,9 @@ from . import _core
 __all__ = [
     "METHODS",
     "MeshCurvatures",
+    "MeshCurvaturesWithRadius",
     "PointSetCurvatures",
+    "PointSetCurvaturesWithRadius",
     "RepairWarning",
     "Status",
     "TetrahedralCurvatures",
@@ -59,6 +61,16 @@ class MeshCurvatures(NamedTuple):
 PointSetCurvatures = collections.namedtuple("PointSetCurvatures", MeshCurvatures._fields + ("normal",))
 PointSetCurvatures.__doc__ = "As MeshCurvatures, and the unit normal of each point's fit (n, 3), oriented as the result."
 
+_SELECTION_FIELDS = ("radius", "noise")
+MeshCurvaturesWithRadius = collections.namedtuple("MeshCurvaturesWithRadius",
+                                                  MeshCurvatures._fields + _SELECTION_FIELDS)
+MeshCurvaturesWithRadius.__doc__ = """As MeshCurvatures, with radius="auto": the radius chosen per vertex and the noise
+(the standard deviation of the heights' noise), in mesh units, as the tool's CSV columns radius and noise."""
+PointSetCurvaturesWithRadius = collections.namedtuple("PointSetCurvaturesWithRadius",
+                                                      PointSetCurvatures._fields + _SELECTION_FIELDS)
+PointSetCurvaturesWithRadius.__doc__ = """As PointSetCurvatures, with radius="auto": the radius chosen per point and the
+noise, in the points' units, as the tool's CSV columns radius and noise."""
+
 
 class TetrahedralCurvatures(NamedTuple):
     """The tool's CSV columns of tetrahedral input: k_1 >= k_2 >= k_3, their mean and product."""
@@ -77,7 +89,8 @@ def mesh_curvatures(vertices, faces, method="paraboloid", *, rings=None, radius=
 
     vertices: (n, 3) float64 or float32; faces: (m, k) integers (k >= 3: triangles,
     quads, ...), indices from 0. method: one of METHODS. rings (--rings), radius
-    (--radius: a length, or a string "Nx" for N mean edge lengths), order (--order),
+    (--radius: a length, or a string "Nx" for N mean edge lengths; "auto" or "auto:A:B"
+    chooses it per vertex, as --radius auto, and gives a MeshCurvaturesWithRadius), order (--order),
     fit_degree (--fit-degree), degree and monge_degree (jet: --degree, --monge-degree):
     None is the tool's default. normals: (n, 3) vertex normals for the methods that
     read them (not jet), for a mesh that needs no repair. Faces that do not make a mesh
@@ -85,14 +98,16 @@ def mesh_curvatures(vertices, faces, method="paraboloid", *, rings=None, radius=
     non-manifold vertices) are repaired as the tool repairs them, with a RepairWarning
     saying what changed; a vertex in no face is failed. Bad input raises ValueError.
     """
-    *values, repairs = _core.mesh_curvatures(vertices, faces, method, rings, radius, order, fit_degree,
-                                             degree, monge_degree, normals, threads)
+    *values, repairs, selection = _core.mesh_curvatures(vertices, faces, method, rings, radius, order,
+                                                        fit_degree, degree, monge_degree, normals, threads)
     for repair in repairs:
         warnings.warn(repair, RepairWarning, stacklevel=2)
+    if selection is not None:
+        return MeshCurvaturesWithRadius(*values, *selection)
     return MeshCurvatures(*values)
 
 
-def point_set_curvatures(points, *, number_of_neighbors=None, neighbor_radius=None, fit_degree=2,
+def point_set_curvatures(points, *, number_of_neighbors=None, neighbor_radius=None, radius=None, fit_degree=2,
                          normals=None, unsigned=False, threads=0):
     """Curvature at the points of a point set (the library's point_set_curvatures).
 
@@ -100,9 +115,17 @@ def point_set_curvatures(points, *, number_of_neighbors=None, neighbor_radius=No
     number_of_neighbors nearest points (default 16, 32, 64 by degree) or the points
     within neighbor_radius; normals (n, 3), if given, orient the result, else the fitted
     normals are oriented consistently, or each point takes H >= 0 with unsigned=True.
+    radius="auto" or "auto:A:B" (the tool's --radius auto: A and B lengths, or "Nx" for N
+    mean distances to the nearest neighbor; default 2x:32x) chooses the ball per point
+    instead of neighbor_radius and gives a PointSetCurvaturesWithRadius.
     """
-    return PointSetCurvatures(*_core.point_set_curvatures(points, number_of_neighbors, neighbor_radius,
-                                                          fit_degree, normals, unsigned, threads))
+    if radius is not None and not (isinstance(radius, str) and radius.startswith("auto")):
+        raise ValueError(f"radius must be 'auto' or 'auto:A:B' (a fixed ball is neighbor_radius), got {radius!r}")
+    *values, selection = _core.point_set_curvatures(points, number_of_neighbors, neighbor_radius, radius,
+                                                    fit_degree, normals, unsigned, threads)
+    if selection is not None:
+        return PointSetCurvaturesWithRadius(*values, *selection)
+    return PointSetCurvatures(*values)
 
 
 def tetrahedral_curvatures(vertices, tetrahedra, scalars, *, rings=None, radius=None, fit_degree=None,

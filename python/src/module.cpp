@@ -42,10 +42,21 @@ void check_range(const std::optional<int>& value, const char* name, Setting sett
            ", got " + std::to_string(*value));
 }
 
-// --radius: a length in mesh units, or a string "Nx" of N mean edge lengths.
+// The string "auto" or "auto:A:B" of --radius auto, else nothing.
+std::optional<std::string> auto_radius_text(const py::object& radius)
+{
+  if (!py::isinstance<py::str>(radius))
+    return std::nullopt;
+  std::string text = radius.cast<std::string>();
+  if (text.compare(0, 4, "auto") != 0)
+    return std::nullopt;
+  return text;
+}
+
+// --radius: a length in mesh units, or a string "Nx" of N mean edge lengths (not auto).
 std::optional<Radius> radius_of(const py::object& radius)
 {
-  if (radius.is_none())
+  if (radius.is_none() || auto_radius_text(radius))
     return std::nullopt;
   if (py::isinstance<py::str>(radius))
     return parse_radius("radius", radius.cast<std::string>());
@@ -90,6 +101,8 @@ Options options(const Method* method, std::optional<int> rings, const py::object
   o.method = method;
   o.rings = rings;
   o.radius = radius_of(radius);
+  if (const auto text = auto_radius_text(radius))
+    o.radius_range = parse_radius_range("radius", *text);
   o.order = order;
   o.fit_degree = fit_degree;
   o.degree = degree;
@@ -168,13 +181,19 @@ py::tuple mesh_curvatures(const py::handle& vertices, const py::handle& faces, c
   auto k_max = new_array(n), k_min = new_array(n), mean = new_array(n), gaussian = new_array(n);
   auto d_max = new_array(n, 3), d_min = new_array(n, 3);
   py::array_t<std::uint8_t> status(static_cast<py::ssize_t>(n));
-  const Surface_outputs out{k_max.mutable_data(), k_min.mutable_data(), mean.mutable_data(),  gaussian.mutable_data(),
-                            d_max.mutable_data(), d_min.mutable_data(), status.mutable_data()};
+  Surface_outputs out{k_max.mutable_data(), k_min.mutable_data(), mean.mutable_data(),  gaussian.mutable_data(),
+                      d_max.mutable_data(), d_min.mutable_data(), status.mutable_data()};
+  auto radius_out = new_array(o.radius_range ? n : 0), noise_out = new_array(o.radius_range ? n : 0);
+  if (o.radius_range) {
+    out.radius = radius_out.mutable_data();
+    out.noise = noise_out.mutable_data();
+  }
   {
     py::gil_scoped_release release;
     write_rows(estimate(o, mesh, std::move(file_to_mesh), given_normals), out);
   }
-  return py::make_tuple(k_max, k_min, mean, gaussian, d_max, d_min, status, repairs);
+  const py::object selection = o.radius_range ? py::object(py::make_tuple(radius_out, noise_out)) : py::none();
+  return py::make_tuple(k_max, k_min, mean, gaussian, d_max, d_min, status, repairs, selection);
 }
 
 py::tuple tetrahedral_curvatures(const py::handle& vertices, const py::handle& tetrahedra, const py::handle& scalars,
@@ -259,6 +278,6 @@ PYBIND11_MODULE(_core, m)
   m.def("tetrahedral_curvatures", &tetrahedral_curvatures, py::arg("vertices"), py::arg("tetrahedra"),
         py::arg("scalars"), py::arg("rings"), py::arg("radius"), py::arg("fit_degree"), py::arg("threads"));
   m.def("point_set_curvatures", &point_set_curvatures, py::arg("points"), py::arg("number_of_neighbors"),
-        py::arg("neighbor_radius"), py::arg("fit_degree"), py::arg("normals"), py::arg("unsigned_curvatures"),
-        py::arg("threads"));
+        py::arg("neighbor_radius"), py::arg("radius"), py::arg("fit_degree"), py::arg("normals"),
+        py::arg("unsigned_curvatures"), py::arg("threads"));
 }

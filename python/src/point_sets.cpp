@@ -3,12 +3,15 @@
 
 #include "arrays.h"
 
+#include "command_line.h"
 #include "kernel.h"
 #include "point_set_estimation.h"
 
 #include <CGAL/Curvature_estimation/point_set_curvatures.h>
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,11 +21,15 @@ using ce_tool::Kernel;
 namespace CE = CGAL::Curvature_estimation;
 
 py::tuple point_set_curvatures(const py::handle& points, std::optional<long long> number_of_neighbors,
-                               std::optional<double> neighbor_radius, int fit_degree, const py::object& normals,
-                               bool unsigned_curvatures, int threads)
+                               std::optional<double> neighbor_radius, const std::optional<std::string>& radius,
+                               int fit_degree, const py::object& normals, bool unsigned_curvatures, int threads)
 {
   if (number_of_neighbors && neighbor_radius)
     refuse("give number_of_neighbors or neighbor_radius, not both");
+  if (radius && neighbor_radius)
+    refuse("give neighbor_radius or radius, not both");
+  const std::optional<ce_tool::Radius_range> range =
+    radius ? std::optional<ce_tool::Radius_range>(ce_tool::parse_radius_range("radius", *radius)) : std::nullopt;
   if (number_of_neighbors && *number_of_neighbors < 0)
     refuse("number_of_neighbors must be at least 3, got " + std::to_string(*number_of_neighbors));
   threads = thread_count(threads);
@@ -45,6 +52,8 @@ py::tuple point_set_curvatures(const py::handle& points, std::optional<long long
   ce_tool::Point_set_estimates e;
   {
     py::gil_scoped_release release;
+    if (range)
+      e.radius_range = ce_tool::point_set_radius_range(*range, ce_tool::mean_spacing(p));
     // The library's default number_of_neighbors, passed as such: one instantiation fewer.
     ce_tool::run_point_set_curvatures(p, given,
                                       number_of_neighbors ? std::size_t(*number_of_neighbors)
@@ -67,7 +76,17 @@ py::tuple point_set_curvatures(const py::handle& points, std::optional<long long
     }
     status_out.mutable_at(i) = static_cast<std::uint8_t>(e.status[i]);
   }
-  return py::make_tuple(k_max, k_min, mean, gaussian, d_max, d_min, status_out, normals_out);
+  py::object selection = py::none();
+  if (range) {
+    auto radius_out = new_array(n), noise_out = new_array(n);
+    for (std::size_t i = 0; i < n; ++i) { // NaN where not estimated, as the tool's rows
+      const std::array<double, 2> values = e.radius_and_noise(i);
+      radius_out.mutable_at(i) = values[0];
+      noise_out.mutable_at(i) = values[1];
+    }
+    selection = py::make_tuple(radius_out, noise_out);
+  }
+  return py::make_tuple(k_max, k_min, mean, gaussian, d_max, d_min, status_out, normals_out, selection);
 }
 
 } // namespace ce_python

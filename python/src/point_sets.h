@@ -7,15 +7,18 @@
 #include <pybind11/pybind11.h>
 
 #include <optional>
+#include <string>
 
 namespace ce_python {
 
 // The tuple k_max, k_min, mean, gaussian, d_max, d_min, status, normal (the fitted unit
-// normal); number_of_neighbors and neighbor_radius as the library takes them (not both;
-// neither: its default for the fit degree), the normals given or None.
+// normal), then (radius, noise) with radius "auto" or "auto:A:B" (the tool's --radius
+// auto on a point set), else None; number_of_neighbors and neighbor_radius as the library
+// takes them (not both; neither: its default for the fit degree), the normals given or None.
 pybind11::tuple point_set_curvatures(const pybind11::handle& points, std::optional<long long> number_of_neighbors,
-                                     std::optional<double> neighbor_radius, int fit_degree,
-                                     const pybind11::object& normals, bool unsigned_curvatures, int threads);
+                                     std::optional<double> neighbor_radius, const std::optional<std::string>& radius,
+                                     int fit_degree, const pybind11::object& normals, bool unsigned_curvatures,
+                                     int threads);
 
 } // namespace ce_python
 

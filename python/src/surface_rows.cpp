@@ -31,6 +31,11 @@ void write_rows(const ce_tool::Surface_estimates& rows, const Surface_outputs& o
       out.d_min[3 * i + c] = r.d_min[c];
     }
     out.status[i] = static_cast<std::uint8_t>(r.status);
+    if (out.radius != nullptr) {
+      const auto [radius, noise] = rows.radius_and_noise(i);
+      out.radius[i] = radius;
+      out.noise[i] = noise;
+    }
   }
 }
 

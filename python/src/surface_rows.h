@@ -18,11 +18,13 @@ namespace ce_python {
 // (row after row, each below n).
 ce_tool::Soup soup_of(const double* xyz, std::size_t n, const std::size_t* indices, std::size_t m, std::size_t k);
 
-// Where the rows go: n values each, d_max and d_min n rows of 3.
+// Where the rows go: n values each, d_max and d_min n rows of 3; radius and noise
+// where given (with --radius auto).
 struct Surface_outputs
 {
   double *k_max, *k_min, *mean, *gaussian, *d_max, *d_min;
   std::uint8_t* status;
+  double *radius = nullptr, *noise = nullptr;
 };
 
 // Row i of `rows` (the file's vertex i) into element i of each output.

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import curvature_estimation as ce
-from conftest import (assert_bit_identical, grid_graph, run_tool, torus, write_medit, write_off)
+from conftest import (assert_bit_identical, grid_graph, run_tool, text, torus, write_medit, write_off)
 
 SURFACE_HEADER = "k_max,k_min,mean,gaussian,d_max_x,d_max_y,d_max_z,d_min_x,d_min_y,d_min_z,status".split(",")
 
@@ -139,3 +139,56 @@ def test_tetrahedral(tmp_path, kwargs, options):
     # a convex f has negative curvatures (the README's convention), away from the boundary
     inner = np.all(np.abs(vertices) < 0.5, axis=1)
     assert np.all(r.mean[inner] < 0)
+
+
+def noisy(vertices, fraction, seed=2):
+    """The vertices moved by Gaussian noise of `fraction` of their bounding box's diagonal."""
+    diagonal = np.linalg.norm(vertices.max(axis=0) - vertices.min(axis=0))
+    return vertices + np.random.default_rng(seed).normal(scale=fraction * diagonal, size=vertices.shape)
+
+
+@pytest.mark.parametrize("method, kwargs, options", [
+    ("paraboloid", {"radius": "auto"}, ["--radius", "auto"]),
+    ("paraboloid", {"radius": "auto:2x:8x", "fit_degree": 3}, ["--radius", "auto:2x:8x", "--fit-degree", 3]),
+    ("jet", {"radius": "auto:0.05:0.6"}, ["--radius", "auto:0.05:0.6"]),
+], ids=["auto", "auto-2x-8x-degree-3", "jet-auto-units"])
+def test_auto_radius_on_a_noisy_torus(tmp_path, method, kwargs, options):
+    """radius="auto": the tool's CSV with its radius and noise columns, bit for bit."""
+    vertices, faces = torus(major=48, minor=24)
+    vertices = noisy(vertices, 0.002)
+    path = tmp_path / "mesh.off"
+    write_off(path, vertices, faces)
+    header, values, status, _ = run_tool(tmp_path, path, "-m", method, *options)
+    assert header == SURFACE_HEADER[:-1] + ["radius", "noise", "status"]
+    r = ce.mesh_curvatures(vertices, faces, method, **kwargs)
+    assert isinstance(r, ce.MeshCurvaturesWithRadius)
+    assert r._fields == ("k_max", "k_min", "mean", "gaussian", "d_max", "d_min", "status", "radius", "noise")
+    actual = np.column_stack([r.k_max, r.k_min, r.mean, r.gaussian, r.d_max, r.d_min, r.radius, r.noise])
+    assert_bit_identical(actual, values)
+    np.testing.assert_array_equal(r.status, status)
+    assert np.all(np.isfinite(r.radius)) and np.all(np.isfinite(r.noise))
+
+
+POINT_SET_HEADER = SURFACE_HEADER[:-1] + ["nx", "ny", "nz", "radius", "noise", "status"]
+
+
+@pytest.mark.parametrize("kwargs, options", [
+    ({"radius": "auto"}, ["--radius", "auto"]),
+    ({"radius": "auto:4x:16x", "fit_degree": 3, "number_of_neighbors": 40},
+     ["--radius", "auto:4x:16x", "--fit-degree", 3, "--neighbors", 40]),
+    ({"radius": "auto:0.05:0.4", "threads": 1}, ["--radius", "auto:0.05:0.4", "--threads", 1]),
+], ids=["auto", "auto-4x-16x-degree-3-k40", "auto-units-sequential"])
+def test_auto_radius_on_a_noisy_point_set(tmp_path, kwargs, options):
+    """point_set_curvatures(radius="auto"): the tool's CSV of the .xyz with its radius and noise columns, bit for bit."""
+    vertices, _ = torus(major=64, minor=32)
+    points = noisy(vertices, 0.002)
+    path = tmp_path / "points.xyz"
+    path.write_text("".join(" ".join(text(c) for c in p) + "\n" for p in points))
+    header, values, status, _ = run_tool(tmp_path, path, *options)
+    assert header == POINT_SET_HEADER
+    r = ce.point_set_curvatures(points, **kwargs)
+    assert isinstance(r, ce.PointSetCurvaturesWithRadius)
+    actual = np.column_stack([r.k_max, r.k_min, r.mean, r.gaussian, r.d_max, r.d_min, r.normal, r.radius, r.noise])
+    assert_bit_identical(actual, values)
+    np.testing.assert_array_equal(r.status, status)
+    assert np.count_nonzero(np.isfinite(r.noise)) > 0.9 * len(points)

@@ -112,6 +112,12 @@ def test_bad_parameters(mesh):
     refuses("radius must be a positive finite length, got -1.0", ce.mesh_curvatures, v, f, radius=-1.0)
     refuses("radius must be a positive finite length, got nan", ce.mesh_curvatures, v, f, radius=float("nan"))
     refuses("radius must be a number or a string", ce.mesh_curvatures, v, f, radius=True)
+    refuses("radius expects a length, auto, or auto:A:B", ce.mesh_curvatures, v, f, radius="auto:2x")
+    refuses("radius auto:0x:2x expects a positive length", ce.mesh_curvatures, v, f, radius="auto:0x:2x")
+    refuses("radius auto:A:B needs A <= B", ce.mesh_curvatures, v, f, radius="auto:4x:2x")
+    refuses("^radius auto applies to the .* methods only, not to 'taubin'$", ce.mesh_curvatures, v, f, "taubin",
+            radius="auto")
+    refuses("^radius and rings exclude each other", ce.mesh_curvatures, v, f, radius="auto", rings=2)
     refuses("threads must be 0", ce.mesh_curvatures, v, f, threads=-1)
     with pytest.raises(TypeError):
         ce.mesh_curvatures(v, f, rings=1.5)
@@ -179,6 +185,11 @@ def test_bad_point_sets():
     refuses("fit_degree", f, points, fit_degree=7)
     refuses("points is empty", f, np.zeros((0, 3)))
     refuses("normals must have a row per point \\(50\\), got 3", f, points, normals=points[:3])
+    refuses("radius must be 'auto' or 'auto:A:B'", f, points, radius=0.5)
+    refuses("radius must be 'auto' or 'auto:A:B'", f, points, radius="2x")
+    refuses("radius expects a length, auto, or auto:A:B", f, points, radius="auto:")
+    refuses("radius auto:A:B needs A <= B: here A is .* in the points' units$", f, points, radius="auto:8x:2x")
+    refuses("give neighbor_radius or radius, not both", f, points, neighbor_radius=1.0, radius="auto")
 
 
 def test_read_off(tmp_path):

@@ -214,11 +214,16 @@ void reject_scale_selection(const char* caller)
 // sets it rather than ignore it, so that a chain written for CGAL's interpolated
 // corrected curvatures does not silently give 1-ring estimates there.
 template <typename NamedParameters>
-void reject_ball_radius(const char* caller)
+void reject_ball_radius_alone(const char* caller)
 {
   if (has_parameter<NamedParameters, internal_np::ball_radius_t>())
     throw std::invalid_argument(std::string(caller) + ": ball_radius is not supported; neighborhoods are set in rings "
                                                       "(neighborhood_rings)");
+}
+template <typename NamedParameters>
+void reject_ball_radius(const char* caller)
+{
+  reject_ball_radius_alone<NamedParameters>(caller);
   reject_scale_selection<NamedParameters>(caller);
 }
 

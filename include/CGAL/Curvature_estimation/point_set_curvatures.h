@@ -10,6 +10,7 @@
 #include <CGAL/Curvature_estimation/internal/normal_orientation.h>
 #include <CGAL/Curvature_estimation/internal/point_set_neighborhood.h>
 #include <CGAL/Curvature_estimation/internal/point_set_search.h>
+#include <CGAL/Curvature_estimation/internal/scale_selector.h>
 #include <CGAL/Curvature_estimation/internal/surface_estimate.h>
 #include <CGAL/Curvature_estimation/internal/vertex_fitter.h>
 #include <CGAL/Curvature_estimation/parameters.h>
@@ -28,6 +29,7 @@
 #include <cstddef>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
@@ -55,15 +57,24 @@ public:
       : fitter_(Point_set_neighborhood(search, neighbors, settings.ball_radius, rings), settings)
       , degree_two_(Point_set_neighborhood(search, neighbors, settings.ball_radius, rings), of_degree_two(settings))
       , use_fallbacks_(use_fallbacks)
-  {}
+  {
+    if (settings.selects_radius())
+      selector_.emplace(Point_set_neighborhood(search, neighbors, 0, rings, settings.radius_range.max), settings);
+  }
 
   // The fallback chain: the fit of fit_degree; at degrees 3 and 4 the fit of degree 2.
+  // Under scale selection, that estimate or the fit over the selected ball (select_estimate).
   Surface_estimate estimate(std::size_t v, const Eigen::Vector3d* given)
   {
-    return estimate_with_fallbacks<Surface_estimate>(
+    const Surface_estimate estimate = estimate_with_fallbacks<Surface_estimate>(
       use_fallbacks_, [&] { return fit(fitter_, v, given); }, fallback(Tried_where::refused, [&] {
         return fitter_.settings().degree == 2 ? Link_result<Surface_estimate>() : fit(degree_two_, v, given);
       }));
+    if (!selector_)
+      return estimate;
+    constexpr Vertex_normal_method method = Vertex_normal_method::quadric_fit;
+    return select_estimate(estimate, selector_->select(v, given, method),
+                           [&](double radius) { return fitter_.ball_fit(v, given, method, radius).estimate; });
   }
 
 private:
@@ -88,6 +99,7 @@ private:
   Fitter fitter_;
   Fitter degree_two_;
   bool use_fallbacks_;
+  std::optional<Scale_selector<Point_set_neighborhood>> selector_; // under scale selection
 };
 
 // The loop's worker (for_each_vertex): the given normals read by `keys(i)`.
@@ -191,6 +203,10 @@ Normal_orientation oriented_rings(const Point_set_search& search, std::size_t ne
 /// min_curvature == 1/r`. A point that cannot be estimated (non-finite, fewer neighbors than the fit
 /// has unknowns, neighbors on a line) gets NaN in every output. Only the outputs passed are written.
 ///
+/// With `ball_radius_range(min, max)` the neighborhood is chosen per point instead: the ball of the radius in that
+/// range of least estimated error of the mean curvature, or the nearest neighbors where the data are clean (the
+/// selection of the mesh estimators, the balls nested and searched once).
+///
 /// Statuses: `widened` over 2k or 4k neighbors (or a grown ball); `fallback` at degrees 3 and 4, the
 /// fit of degree 2 where no neighborhood conditions that of `fit_degree`; `not_estimable`, NaN.
 ///
@@ -253,6 +269,26 @@ Normal_orientation oriented_rings(const Point_set_search& search, std::size_t ne
 ///     \cgalParamType{`double`, greater than 1}
 ///     \cgalParamDefault{`1e3`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{ball_radius_range}
+///     \cgalParamDescription{chooses per point the radius of a ball of neighbors between these bounds (scale selection,
+///       as on meshes: see the User Manual, Point sets): the radius of least estimated error of the mean curvature,
+///       the noise estimated from the fits' residuals; where the data are clean the nearest neighbors' estimate is
+///       kept}
+///     \cgalParamType{`std::pair<double, double>` (min, max), 0 < min <= max, in the units of the points}
+///     \cgalParamDefault{none: no selection; excludes `neighbor_radius`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_ball_radius_map}
+///     \cgalParamDescription{output, with `ball_radius_range` only: the radius of each point's estimate (the largest
+///       distance to its nearest neighbors where their estimate was kept), NaN where none}
+///     \cgalParamType{a `WritablePropertyMap` from the range's value type to a floating-point type}
+///     \cgalParamDefault{not computed}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_noise_map}
+///     \cgalParamDescription{output, with `ball_radius_range` only: the estimated standard deviation of the noise of
+///       the heights about each point, in the units of the points, NaN where too few neighbors}
+///     \cgalParamType{a `WritablePropertyMap` from the range's value type to a floating-point type}
+///     \cgalParamDefault{not computed}
+///   \cgalParamNEnd
 ///   \ceUseFallbacksParameter
 ///   \cgalParamNBegin{unsigned_curvatures}
 ///     \cgalParamDescription{without given normals: whether each point takes the side where H >= 0 instead of the
@@ -293,7 +329,8 @@ void point_set_curvatures(PointRange& points, const NamedParameters& np = parame
     std::is_base_of<std::random_access_iterator_tag, typename std::iterator_traits<Iterator>::iterator_category>::value;
   const char* const caller = "point_set_curvatures";
 
-  internal::Fit_parameters fit = internal::curvature_fit_parameters(np, caller, 4, internal::Neighborhoods::rings);
+  internal::Fit_parameters fit =
+    internal::curvature_fit_parameters(np, caller, 4, internal::Neighborhoods::rings_or_selected);
   internal::Fit_settings& settings = fit.settings;
   settings.ring_intercept = true;
   settings.ball_radius = static_cast<double>(internal::parameter_or(np, ::CGAL::internal_np::neighbor_radius, 0.0));
@@ -302,6 +339,8 @@ void point_set_curvatures(PointRange& points, const NamedParameters& np = parame
                                                internal::default_point_set_neighbors(settings.degree));
   if (by_radius && internal::has_parameter<NamedParameters, internal_np::number_of_neighbors_t>())
     throw std::invalid_argument(std::string(caller) + ": give number_of_neighbors or neighbor_radius, not both");
+  if (by_radius && settings.selects_radius())
+    throw std::invalid_argument(std::string(caller) + ": neighbor_radius and ball_radius_range exclude each other");
   if (by_radius && !(settings.ball_radius > 0 && std::isfinite(settings.ball_radius)))
     throw std::invalid_argument(std::string(caller) + ": neighbor_radius must be positive and finite");
   if (!by_radius && k < 3)

@@ -48,8 +48,9 @@ struct Fit_parameters
 enum class Neighborhoods
 {
   rings,
-  rings_or_ball,         // and ball_radius
-  rings_ball_or_selected // and ball_radius_range
+  rings_or_ball,          // and ball_radius
+  rings_ball_or_selected, // and ball_radius_range
+  rings_or_selected       // and ball_radius_range, not ball_radius (point sets)
 };
 
 // The parameters from `np`; `caller` names the public function in error messages.
@@ -63,6 +64,8 @@ Fit_parameters fit_parameters(const NamedParameters& np, const char* caller,
     reject_ball_radius<NamedParameters>(caller);
   else if (neighborhoods == Neighborhoods::rings_or_ball)
     reject_scale_selection<NamedParameters>(caller);
+  else if (neighborhoods == Neighborhoods::rings_or_selected)
+    reject_ball_radius_alone<NamedParameters>(caller);
   Fit_settings settings;
   settings.rings = parameter_or(np, internal_np::neighborhood_rings, 1);
   settings.boundary_rings = parameter_or(np, internal_np::boundary_neighborhood_rings, settings.rings);

@@ -37,7 +37,9 @@ struct Point_set_rings
 // `radius` (neighbors 0) ring 1 is the points within it and the ball grows from
 // it. With `rings`, the first ring and the side of the first-order normal are
 // read from it; else found here, the normal with the sign that makes its largest
-// coordinate positive.
+// coordinate positive. With k nearest as ring 1, a ball is the points within its
+// radius, found once out to at least `reach` and sorted by distance, so that the
+// nested balls of the scale selection share one search.
 class Point_set_neighborhood
 {
 public:
@@ -48,11 +50,12 @@ public:
   using Index = Point_set_search::Index;
 
   Point_set_neighborhood(const Point_set_search& search, std::size_t neighbors, double radius,
-                         const Point_set_rings* rings = nullptr)
+                         const Point_set_rings* rings = nullptr, double reach = 0)
       : search_(&search)
       , k_(neighbors)
       , radius_(radius)
       , rings_(rings)
+      , reach_(reach)
   {}
 
   const Eigen::Vector3d& point(Vertex v) const { return search_->point(v); }
@@ -62,6 +65,8 @@ public:
     vertices_.assign(1, v);
     ring_ends_.assign(1, 1);
     ball_radius_ = radius_;
+    ball_distances_.clear();
+    inside_ = 0;
     if (rings_ != nullptr && k_ > 0) {
       const Index* row = rings_->neighbors.data() + v * rings_->stride;
       for (std::size_t i = 0; i < rings_->stride && row[i] != Point_set_rings::none; ++i)
@@ -98,20 +103,43 @@ public:
 
   // After start(v) with a radius: the ball is every point within `radius`, the
   // first ring first (nothing joins points: the other side of a thin part is taken).
+  // With k nearest: the points within `radius`, appended after the rings nearest
+  // first (ring 1 is no ball: its points are in the ball only as appended).
   bool grow_ball(double radius, const Eigen::Vector3d&)
   {
-    if (radius > ball_radius_) {
-      search_->within(Index(vertices_[0]), radius, found_);
-      const double inner = ball_radius_ * ball_radius_;
-      for (const auto& f : found_)
-        if (f.first > inner)
-          vertices_.push_back(f.second);
-      ball_radius_ = radius;
+    if (k_ == 0) {
+      if (radius > ball_radius_) {
+        search_->within(Index(vertices_[0]), radius, found_);
+        const double inner = ball_radius_ * ball_radius_;
+        for (const auto& f : found_)
+          if (f.first > inner)
+            vertices_.push_back(f.second);
+        ball_radius_ = radius;
+      }
+      return vertices_.size() < search_->finite_size();
     }
-    return vertices_.size() < search_->finite_size();
+    if (ball_distances_.empty() && inside_ == 0)
+      ball_begin_ = vertices_.size();
+    if (radius > ball_radius_) {
+      const double reach = (std::max)(radius, reach_);
+      search_->within(Index(vertices_[0]), reach, found_);
+      std::sort(found_.begin(), found_.end());
+      const double inner = ball_distances_.empty() ? -1 : ball_radius_ * ball_radius_;
+      for (const auto& f : found_)
+        if (f.first > inner) {
+          vertices_.push_back(f.second);
+          ball_distances_.push_back(f.first);
+        }
+      ball_radius_ = reach;
+    }
+    while (inside_ < ball_distances_.size() && ball_distances_[inside_] <= radius * radius)
+      ++inside_;
+    return 1 + inside_ < search_->finite_size();
   }
-  bool inside_ball(std::size_t) const { return true; }
-  std::size_t ball_size() const { return vertices_.size(); }
+  bool inside_ball(std::size_t i) const { return k_ == 0 || i == 0 || (i >= ball_begin_ && i - ball_begin_ < inside_); }
+  std::size_t ball_size() const { return k_ == 0 ? vertices_.size() : 1 + inside_; }
+  // With k nearest: the k-th point to join the ball, nearest first.
+  std::size_t ball_joined(std::size_t k) const { return k == 0 ? 0 : ball_begin_ + k - 1; }
 
   static bool gathers_for_normal(Vertex_normal_method) { return true; }
 
@@ -148,10 +176,13 @@ private:
   std::size_t k_;
   double radius_;
   const Point_set_rings* rings_;
+  double reach_;
   std::vector<Vertex> vertices_;
   std::vector<std::size_t> ring_ends_;
   Point_set_search::Found found_;
-  double ball_radius_ = 0;
+  double ball_radius_ = 0;                  // the radius searched
+  std::vector<double> ball_distances_;      // with k nearest: the squared distances of the points appended
+  std::size_t ball_begin_ = 0, inside_ = 0; // where they begin, how many are inside the ball
 };
 
 } // namespace internal

@@ -49,6 +49,7 @@ public:
   Scale_selector(Neighborhood neighborhood, const Fit_settings& settings)
       : samples_(std::move(neighborhood))
       , degree_(settings.degree)
+      , intercept_(settings.ring_intercept)
       , radii_(candidate_radii(settings.radius_range))
   {
     candidates_.reserve(radii_.size());
@@ -65,7 +66,7 @@ public:
     const Frame frame = Samples::frame_of(unit);
     const double scale = samples_.scale();
     selection.default_radius = samples_.one_ring_radius() * scale;
-    const double default_variance = one_ring_variance(frame);
+    const double default_variance = intercept_ ? intercept_variance(frame) : one_ring_variance(frame);
     double noise_variance = std::numeric_limits<double>::quiet_NaN();
     const auto nested_balls = [&](auto fit) { noise_variance = fit_nested_balls(fit, frame); };
     if (degree_ == 2)
@@ -174,8 +175,24 @@ private:
     return own + vertex * vertex;
   }
 
+  // The same for the default fit with an intercept over the first ring (point sets),
+  // the vertex one of its samples.
+  double intercept_variance(const Frame& frame) const
+  {
+    const auto variance = [&](auto fit) {
+      samples_.template for_each_sample<decltype(fit)>(
+        Sampling{frame, 1, Sample_weights::uniform},
+        [&](const Point& x, double height, double weight) { fit.add(x, height, weight); });
+      return fit.solve(unbounded) ? fit.mean_curvature_variance() : unbounded;
+    };
+    return degree_ == 2   ? variance(Intercept_fit<D, 2>())
+           : degree_ == 3 ? variance(Intercept_fit<D, 3>())
+                          : variance(Intercept_fit<D, 4>());
+  }
+
   Samples samples_;
   int degree_;
+  bool intercept_;            // the default fit has an intercept
   std::vector<double> radii_; // in the mesh's units
   std::vector<Scale_candidate> candidates_;
 };
