@@ -209,8 +209,9 @@ std::vector<char> refused_before(const Mesh& mesh)
   CEI::Surface_fitter<Mesh, decltype(vpm)> fitter(mesh, vpm, settings);
   std::vector<char> refused;
   for (Vertex v : vertices(mesh)) {
-    const Status status = fitter.fit(v, CE::Vertex_normal_method::quadric_fit).estimate.status;
-    refused.push_back(status == Status::not_estimable || status == Status::fallback);
+    CEI::Surface_estimate e;
+    fitter.fit(v, CE::Vertex_normal_method::quadric_fit, e);
+    refused.push_back(e.status == Status::not_estimable || e.status == Status::fallback);
   }
   return refused;
 }
@@ -288,7 +289,8 @@ TEST(CGAL_data_meshes, EveryEstimatorWithItsDefaults)
       jet_errors.push_back(std::abs(jet.mean[i] - h_ref));
       if (ours.status[i] != Status::fallback)
         continue;
-      const CEI::Surface_estimate h = hamann.fit(v, CE::Vertex_normal_method::quadric_fit).estimate;
+      CEI::Surface_estimate h;
+      hamann.fit(v, CE::Vertex_normal_method::quadric_fit, h);
       if (h.status != Status::not_estimable) {
         border_errors.push_back(our_errors.back());
         hamann_errors.push_back(std::abs(0.5 * (h.max_curvature + h.min_curvature) - h_ref));

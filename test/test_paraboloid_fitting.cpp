@@ -469,7 +469,8 @@ TEST(Paraboloid_fitting, AtBoundaryVerticesThatOnlyTheWhitenedTestAcceptsTheDefa
       std::vector<double> our_errors, hamann_errors;
       std::size_t i = 0;
       for (Mesh::Vertex_index v : vertices(mesh)) {
-        const CE::internal::Surface_estimate h = hamann.fit(v, CE::Vertex_normal_method::quadric_fit).estimate;
+        CE::internal::Surface_estimate h;
+        hamann.fit(v, CE::Vertex_normal_method::quadric_fit, h);
         if (ours.status[i] == Estimation_status::fallback && h.status != Estimation_status::not_estimable) {
           EXPECT_TRUE(CGAL::is_border(v, mesh)) << i;
           our_errors.push_back(std::abs(ours.mean[i] - exact[i].H));

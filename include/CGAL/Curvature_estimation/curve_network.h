@@ -91,20 +91,22 @@ public:
       given = *given_normal / length;
     }
     const Eigen::Vector3d* unit = given_normal != nullptr ? &given : nullptr;
-    return estimate_with_fallbacks<Surface_estimate>(
-      use_fallbacks_, [&] { return curve_network_fit(v, unit); },
-      fallback(Tried_where::refused, [&] { return accepted_or_refused(paraboloid_.estimate(v, unit)); }));
+    Surface_estimate estimate;
+    estimate_with_fallbacks(
+      estimate, use_fallbacks_, [&](Surface_estimate& out) { return curve_network_fit(v, unit, out); },
+      fallback(Tried_where::refused,
+               [&](Surface_estimate& out) { return final_estimate(out, paraboloid_.estimate(v, unit)); }));
+    return estimate;
   }
 
 private:
   // The estimate from the curves through `v`, refused where they are not enough
   // (see estimate), hopeless where `v` has no finite point or 1-ring.
-  Link_result<Surface_estimate> curve_network_fit(vertex_descriptor v, const Eigen::Vector3d* given_normal)
+  Verdict curve_network_fit(vertex_descriptor v, const Eigen::Vector3d* given_normal, Surface_estimate& out)
   {
-    const Link_result<Surface_estimate> refused;
     center_ = point_in_double(vpm_, v);
     if (!center_.allFinite() || !gather_one_ring(v))
-      return {Surface_estimate(), Verdict::hopeless};
+      return Verdict::hopeless;
 
     // Orientation of the tangent plane in which neighbors are paired, and of
     // the normal computed from the tangents: the given normal, else the faces'.
@@ -113,13 +115,13 @@ private:
       orientation = face_average_normal(v, *g_, vpm_, Vertex_normal_method::area_weighted);
       const double length = orientation.norm();
       if (!(length > 0) || !std::isfinite(length))
-        return refused;
+        return Verdict::refused;
       orientation /= length;
     }
 
     pair_neighbors(orientation);
     if (pairs_.size() < 3 || !curves_are_mesh_lines())
-      return refused;
+      return Verdict::refused;
 
     // One curve per pair, at the highest order the mesh lines allow up to order_.
     tangents_.clear();
@@ -135,23 +137,22 @@ private:
       curvature_vectors_.push_back(curve.curvature_vector);
     }
     if (tangents_.size() < 3)
-      return refused;
+      return Verdict::refused;
 
     Eigen::Vector3d normal = orientation;
     if (given_normal == nullptr && !normal_from_tangents(tangents_.data(), tangents_.size(), orientation, normal))
-      return refused;
+      return Verdict::refused;
 
     normal_curvatures_.clear();
     for (const Eigen::Vector3d& vector : curvature_vectors_)
       normal_curvatures_.push_back(meusnier_normal_curvature(vector, normal));
     const Euler_solution euler = euler_fit(tangents_.data(), normal_curvatures_.data(), tangents_.size(), normal);
     if (!euler.valid)
-      return refused;
+      return Verdict::refused;
 
-    return {Surface_estimate::from_principal(reduced ? Estimation_status::widened : Estimation_status::ok,
-                                             euler.max_curvature / scale_, euler.min_curvature / scale_,
-                                             euler.max_direction, euler.min_direction, normal),
-            Verdict::accepted};
+    out.set_principal(reduced ? Estimation_status::widened : Estimation_status::ok, euler.max_curvature / scale_,
+                      euler.min_curvature / scale_, euler.max_direction, euler.min_direction, normal);
+    return Verdict::accepted;
   }
 
   // The distinct neighbors of `v` with finite points, in the order of the

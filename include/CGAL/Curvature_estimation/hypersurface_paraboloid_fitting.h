@@ -39,15 +39,24 @@ struct Hypersurface_paraboloid_estimator
   // fit_degree 3 over rings, the fit of degree 2.
   Hypersurface_estimate estimate(std::size_t i, const Eigen::Vector4d* given)
   {
-    return estimate_with_fallbacks<Hypersurface_estimate>(
-      use_fallbacks,
-      [&] { return accepted_or_refused((given != nullptr ? fitter.fit(i, *given) : fitter.fit(i, method)).estimate); },
-      fallback(Tried_where::refused, [&] {
+    Hypersurface_estimate estimate;
+    estimate_with_fallbacks(
+      estimate, use_fallbacks,
+      [&](Hypersurface_estimate& out) {
+        if (given != nullptr)
+          fitter.fit(i, *given, out);
+        else
+          fitter.fit(i, method, out);
+        return accepted_or_refused(out);
+      },
+      fallback(Tried_where::refused, [&](Hypersurface_estimate& out) {
         const Fit_settings& s = fitter.settings();
         if (s.degree == 2 || s.in_ball())
-          return Link_result<Hypersurface_estimate>();
-        return accepted_or_refused(fitter.degree_two_fit(i, given, method).estimate);
+          return Verdict::refused;
+        fitter.degree_two_fit(i, given, method, out);
+        return accepted_or_refused(out);
       }));
+    return estimate;
   }
 };
 

@@ -77,13 +77,15 @@ public:
   // Under scale selection, that or CGAL's fit over the ball selected by this package's fits.
   Surface_estimate estimate(vertex_descriptor v, const Eigen::Vector3d*)
   {
-    const Surface_estimate estimate = estimate_with_fallbacks<Surface_estimate>(
-      use_fallbacks_, [&] { return accepted_or_refused(fit(v, ball_radius_)); },
-      fallback(Tried_where::refused, [&] { return accepted_or_refused(paraboloid_.estimate(v, nullptr)); }));
-    if (!selector_)
-      return estimate;
-    return select_estimate(estimate, selector_->select(v, nullptr, Vertex_normal_method::area_weighted),
-                           [&](double radius) { return fit(v, radius); });
+    Surface_estimate estimate;
+    estimate_with_fallbacks(
+      estimate, use_fallbacks_, [&](Surface_estimate& out) { return final_estimate(out, fit(v, ball_radius_)); },
+      fallback(Tried_where::refused,
+               [&](Surface_estimate& out) { return final_estimate(out, paraboloid_.estimate(v, nullptr)); }));
+    if (selector_)
+      estimate = select_estimate(estimate, selector_->select(v, nullptr, Vertex_normal_method::area_weighted),
+                                 [&](double radius) { return fit(v, radius); });
+    return estimate;
   }
 
 private:

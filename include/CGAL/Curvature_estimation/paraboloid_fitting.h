@@ -44,15 +44,17 @@ public:
   // that estimate or the fit over the selected ball (select_estimate).
   Surface_estimate estimate(vertex_descriptor v, const Eigen::Vector3d* given)
   {
-    const Surface_estimate estimate = estimate_with_fallbacks<Surface_estimate>(
-      use_fallbacks_, [&] { return fit(v, given); },
-      fallback(Tried_where::refused, [&] { return degree_two_fit(v, given); }),
-      fallback(Tried_where::refused_or_provisional, [&] { return plane_frame_fit(v, given); }),
-      fallback(Tried_where::refused, [&] { return gauss_map_fit(v, given); }));
-    if (!selector_)
-      return estimate;
-    return select_estimate(estimate, selector_->select(v, given, method_),
-                           [&](double radius) { return fitter_.ball_fit(v, given, method_, radius).estimate; });
+    Surface_estimate estimate;
+    estimate_with_fallbacks(
+      estimate, use_fallbacks_, [&](Surface_estimate& out) { return fit(v, given, out); },
+      fallback(Tried_where::refused, [&](Surface_estimate& out) { return degree_two_fit(v, given, out); }),
+      fallback(Tried_where::refused_or_provisional,
+               [&](Surface_estimate& out) { return plane_frame_fit(v, given, out); }),
+      fallback(Tried_where::refused, [&](Surface_estimate& out) { return gauss_map_fit(v, given, out); }));
+    if (selector_)
+      estimate = select_estimate(estimate, selector_->select(v, given, method_),
+                                 [&](double radius) { return fitter_.ball_estimate(v, given, method_, radius); });
+    return estimate;
   }
 
 private:
@@ -69,34 +71,39 @@ private:
       selector_.emplace(Face_graph_neighborhood<FaceGraph, VertexPointMap>(g, vpm, adjacency), fit.settings);
   }
 
-  Link_result<Surface_estimate> fit(vertex_descriptor v, const Eigen::Vector3d* given)
+  // The links of the chain (fallback_chain.h).
+  Verdict fit(vertex_descriptor v, const Eigen::Vector3d* given, Surface_estimate& out)
   {
-    const Vertex_fit<Surface_estimate> r = given != nullptr ? fitter_.fit(v, *given) : fitter_.fit(v, method_);
+    const Vertex_fit r = given != nullptr ? fitter_.fit(v, *given, out) : fitter_.fit(v, method_, out);
     const Fit_settings& s = fitter_.settings();
-    if (r.estimate.status == Estimation_status::not_estimable)
-      return {r.estimate,
-              r.neighbors < std::size_t(Paraboloid_fit<2>::unknowns) ? Verdict::hopeless : Verdict::refused};
+    if (out.status == Estimation_status::not_estimable)
+      return r.neighbors < std::size_t(Paraboloid_fit<2>::unknowns) ? Verdict::hopeless : Verdict::refused;
     const bool provisional = fitted_normal(given) && s.degree == 2 && !s.in_ball() && r.on_border && r.whitened;
-    return {r.estimate, provisional ? Verdict::provisional : Verdict::accepted};
+    return provisional ? Verdict::provisional : Verdict::accepted;
   }
 
-  Link_result<Surface_estimate> degree_two_fit(vertex_descriptor v, const Eigen::Vector3d* given)
+  Verdict degree_two_fit(vertex_descriptor v, const Eigen::Vector3d* given, Surface_estimate& out)
   {
     const Fit_settings& s = fitter_.settings();
     if (s.degree == 2 || s.in_ball())
-      return {};
-    return accepted_or_refused(fitter_.degree_two_fit(v, given, method_).estimate);
+      return Verdict::refused;
+    fitter_.degree_two_fit(v, given, method_, out);
+    return accepted_or_refused(out);
   }
 
-  Link_result<Surface_estimate> plane_frame_fit(vertex_descriptor v, const Eigen::Vector3d* given)
+  Verdict plane_frame_fit(vertex_descriptor v, const Eigen::Vector3d* given, Surface_estimate& out)
   {
-    return fitted_normal(given) ? accepted_or_refused(fitter_.plane_frame_fit(v)) : Link_result<Surface_estimate>();
+    if (!fitted_normal(given))
+      return Verdict::refused;
+    fitter_.plane_frame_fit(v, out);
+    return accepted_or_refused(out);
   }
 
-  Link_result<Surface_estimate> gauss_map_fit(vertex_descriptor v, const Eigen::Vector3d* given)
+  Verdict gauss_map_fit(vertex_descriptor v, const Eigen::Vector3d* given, Surface_estimate& out)
   {
-    return fitted_normal(given) ? accepted_or_refused(gauss_map_.estimate(v, nullptr))
-                                : Link_result<Surface_estimate>();
+    if (!fitted_normal(given))
+      return Verdict::refused;
+    return final_estimate(out, gauss_map_.estimate(v, nullptr));
   }
 
   bool fitted_normal(const Eigen::Vector3d* given) const

@@ -66,15 +66,18 @@ public:
   // Under scale selection, that estimate or the fit over the selected ball (select_estimate).
   Surface_estimate estimate(std::size_t v, const Eigen::Vector3d* given)
   {
-    const Surface_estimate estimate = estimate_with_fallbacks<Surface_estimate>(
-      use_fallbacks_, [&] { return fit(fitter_, v, given); }, fallback(Tried_where::refused, [&] {
-        return fitter_.settings().degree == 2 ? Link_result<Surface_estimate>() : fit(degree_two_, v, given);
+    Surface_estimate estimate;
+    estimate_with_fallbacks(
+      estimate, use_fallbacks_, [&](Surface_estimate& out) { return fit(fitter_, v, given, out); },
+      fallback(Tried_where::refused, [&](Surface_estimate& out) {
+        return fitter_.settings().degree == 2 ? Verdict::refused : fit(degree_two_, v, given, out);
       }));
-    if (!selector_)
-      return estimate;
-    constexpr Vertex_normal_method method = Vertex_normal_method::quadric_fit;
-    return select_estimate(estimate, selector_->select(v, given, method),
-                           [&](double radius) { return fitter_.ball_fit(v, given, method, radius).estimate; });
+    if (selector_) {
+      constexpr Vertex_normal_method method = Vertex_normal_method::quadric_fit;
+      estimate = select_estimate(estimate, selector_->select(v, given, method),
+                                 [&](double radius) { return fitter_.ball_estimate(v, given, method, radius); });
+    }
+    return estimate;
   }
 
 private:
@@ -86,14 +89,13 @@ private:
     return settings;
   }
 
-  static Link_result<Surface_estimate> fit(Fitter& fitter, std::size_t v, const Eigen::Vector3d* given)
+  static Verdict fit(Fitter& fitter, std::size_t v, const Eigen::Vector3d* given, Surface_estimate& out)
   {
-    const Vertex_fit<Surface_estimate> r =
-      given != nullptr ? fitter.fit(v, *given) : fitter.fit(v, Vertex_normal_method::quadric_fit);
-    if (r.estimate.status != Estimation_status::not_estimable)
-      return {r.estimate, Verdict::accepted};
-    return {r.estimate,
-            r.neighbors < std::size_t(Intercept_fit<2, 2>::unknowns) ? Verdict::hopeless : Verdict::refused};
+    const Vertex_fit r =
+      given != nullptr ? fitter.fit(v, *given, out) : fitter.fit(v, Vertex_normal_method::quadric_fit, out);
+    if (out.status != Estimation_status::not_estimable)
+      return Verdict::accepted;
+    return r.neighbors < std::size_t(Intercept_fit<2, 2>::unknowns) ? Verdict::hopeless : Verdict::refused;
   }
 
   Fitter fitter_;

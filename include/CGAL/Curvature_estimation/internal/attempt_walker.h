@@ -143,11 +143,12 @@ protected:
     });
   }
 
-  // The estimate from an accepted fit (status widened where `reach` is more than
-  // `asked`); on surfaces, a fit with the gradient and no quartic terms is first
-  // solved again without the curvature's own quartic term.
+  // Sets `e` to the estimate from an accepted fit (status widened where `reach` is
+  // more than `asked`; not estimable where the curvature is not finite); on
+  // surfaces, a fit with the gradient and no quartic terms is first solved again
+  // without the curvature's own quartic term.
   template <typename Fit>
-  Estimate curvature_estimate(Fit& fit, const Sampling& sampling, int reach, int asked) const
+  void set_curvature_estimate(Estimate& e, Fit& fit, const Sampling& sampling, int reach, int asked) const
   {
     if constexpr (Fit::quartic_moments)
       fit.subtract_curvature_quartic();
@@ -162,9 +163,10 @@ protected:
     const Graph_curvature<N> curvature =
       graph_curvature<N>(fit.hessian(), fit.gradient(), sampling.frame.tangents, sampling.frame.normal);
     if (!Samples::all_finite(curvature.curvatures) || !Samples::all_finite(curvature.directions))
-      return Estimate();
-    return Neighborhood::estimate(reach > asked ? Estimation_status::widened : Estimation_status::ok, curvature,
-                                  samples_.scale());
+      e = Estimate();
+    else
+      Neighborhood::set_estimate(e, reach > asked ? Estimation_status::widened : Estimation_status::ok, curvature,
+                                 samples_.scale());
   }
 
   template <typename Fit>

@@ -79,9 +79,10 @@ public:
     return from_ring ? corner_normal_sum(v, offsets, finite) : face_average_normal(v, *g_, vpm_, method);
   }
 
-  static Surface_estimate estimate(Estimation_status status, const Graph_curvature<3>& curvature, double scale)
+  static void set_estimate(Surface_estimate& e, Estimation_status status, const Graph_curvature<3>& curvature,
+                           double scale)
   {
-    return surface_estimate_of(status, curvature, scale);
+    set_surface_estimate(e, status, curvature, scale);
   }
 
 private:

@@ -12,11 +12,9 @@ namespace CGAL {
 namespace Curvature_estimation {
 namespace internal {
 
-// What a fit at one vertex found, for the links of a chain.
-template <typename Estimate>
+// What a fit at one vertex found besides its estimate, for the links of a chain.
 struct Vertex_fit
 {
-  Estimate estimate;         // not_estimable where no fit was accepted
   std::size_t neighbors = 0; // the neighbors gathered, on every ring reached or in the ball
   bool whitened = false;     // whether the whitened test accepted the fit or its normal's
   bool on_border = false;
@@ -24,7 +22,9 @@ struct Vertex_fit
 
 // What a link of a chain found at a vertex: an estimate (accepted), an estimate
 // that a later link may replace (provisional), none (refused), or none and none
-// to be had from any link (hopeless: the vertex carries no information).
+// to be had from any link (hopeless: the vertex carries no information). A link
+// is called as link(out) with `out` not estimable, writes its estimate there and
+// returns its verdict; `out` stays not estimable unless accepted or provisional.
 enum class Verdict
 {
   accepted,
@@ -33,18 +33,19 @@ enum class Verdict
   hopeless
 };
 
-template <typename Estimate>
-struct Link_result
-{
-  Estimate estimate; // not_estimable unless accepted or provisional
-  Verdict verdict = Verdict::refused;
-};
-
 // The verdict on an estimate that is final where it exists.
 template <typename Estimate>
-Link_result<Estimate> accepted_or_refused(const Estimate& e)
+Verdict accepted_or_refused(const Estimate& e)
 {
-  return {e, e.status == Estimation_status::not_estimable ? Verdict::refused : Verdict::accepted};
+  return e.status == Estimation_status::not_estimable ? Verdict::refused : Verdict::accepted;
+}
+
+// A link's writing of `e`, an estimate that is final where it exists, into `out`.
+template <typename Estimate>
+Verdict final_estimate(Estimate& out, const Estimate& e)
+{
+  out = e;
+  return accepted_or_refused(out);
 }
 
 // Where a fallback link is tried: where the links before it found nothing, or
@@ -59,7 +60,7 @@ template <typename Link>
 struct Fallback
 {
   Tried_where where;
-  Link link; // link() returns a Link_result
+  Link link;
 };
 
 template <typename Link>
@@ -68,31 +69,35 @@ Fallback<Link> fallback(Tried_where where, Link link)
   return {where, link};
 }
 
-// The estimate of `first()`, unless it is refused or provisional and
-// `use_fallbacks`: then that of the first of `fallbacks` tried there that accepts,
-// with the status fallback; where none does, a provisional estimate stands and a
-// refused vertex is not estimable. A hopeless verdict ends the chain.
+// Writes into `out` (not estimable on entry) the estimate of `first`, unless it is
+// refused or provisional and `use_fallbacks`: then that of the first of `fallbacks`
+// tried there that accepts, with the status fallback; where none does, a
+// provisional estimate stands and a refused vertex is not estimable. A hopeless
+// verdict ends the chain.
 template <typename Estimate, typename First, typename... Links>
-Estimate estimate_with_fallbacks(bool use_fallbacks, const First& first, const Fallback<Links>&... fallbacks)
+void estimate_with_fallbacks(Estimate& out, bool use_fallbacks, const First& first, const Fallback<Links>&... fallbacks)
 {
-  Link_result<Estimate> best = first();
-  if (!use_fallbacks || best.verdict == Verdict::accepted)
-    return best.estimate;
+  Verdict best = first(out);
+  if (!use_fallbacks || best == Verdict::accepted)
+    return;
   bool from_fallback = false;
   const auto try_link = [&](const auto& f) { // true: the chain ends
-    if (best.verdict == Verdict::hopeless)
+    if (best == Verdict::hopeless)
       return true;
-    if (best.verdict == Verdict::provisional && f.where == Tried_where::refused)
+    if (best == Verdict::provisional && f.where == Tried_where::refused)
       return false;
-    const Link_result<Estimate> r = f.link();
-    if (r.verdict == Verdict::accepted || (best.verdict == Verdict::refused && r.verdict != Verdict::refused)) {
+    Estimate e;
+    const Verdict r = f.link(e);
+    if (r == Verdict::accepted || (best == Verdict::refused && r != Verdict::refused)) {
+      out = e;
       best = r;
       from_fallback = true;
     }
-    return best.verdict == Verdict::accepted;
+    return best == Verdict::accepted;
   };
   (try_link(fallbacks) || ...);
-  return from_fallback ? as_fallback(best.estimate) : best.estimate;
+  if (from_fallback && out.status != Estimation_status::not_estimable)
+    out.status = Estimation_status::fallback;
 }
 
 } // namespace internal

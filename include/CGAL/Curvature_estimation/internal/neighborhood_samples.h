@@ -38,7 +38,7 @@ namespace internal {
 //   initial_normal(v, method, gathered, offsets, finite, scale)
 //                                           the first-order normal (any length)
 //   restart_from_hyperplane                 see Vertex_fitter::estimate_normal
-//   estimate(status, curvature, scale)      the result from the curvature in the fit's frame
+//   set_estimate(e, status, curvature, scale) e from the curvature in the fit's frame
 // The buffers are reused from vertex to vertex; nothing else is kept from one
 // vertex to the next.
 template <typename Neighborhood>

@@ -166,9 +166,10 @@ public:
     return normal[k] < 0 ? Eigen::Vector3d(-normal) : normal;
   }
 
-  static Surface_estimate estimate(Estimation_status status, const Graph_curvature<3>& curvature, double scale)
+  static void set_estimate(Surface_estimate& e, Estimation_status status, const Graph_curvature<3>& curvature,
+                           double scale)
   {
-    return surface_estimate_of(status, curvature, scale);
+    set_surface_estimate(e, status, curvature, scale);
   }
 
 private:

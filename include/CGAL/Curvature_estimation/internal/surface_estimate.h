@@ -40,27 +40,35 @@ struct Surface_estimate
 
   double mean_curvature() const { return 0.5 * (max_curvature + min_curvature); }
 
+  // Sets every member but the radius and the noise, with K = k1 k2.
+  void set_principal(Estimation_status s, double max_k, double min_k, const Eigen::Vector3d& max_d,
+                     const Eigen::Vector3d& min_d, const Eigen::Vector3d& n)
+  {
+    status = s;
+    max_curvature = max_k;
+    min_curvature = min_k;
+    gaussian_curvature = max_k * min_k;
+    max_direction = max_d;
+    min_direction = min_d;
+    normal = n;
+  }
+
   static Surface_estimate from_principal(Estimation_status status, double max_curvature, double min_curvature,
                                          const Eigen::Vector3d& max_direction, const Eigen::Vector3d& min_direction,
                                          const Eigen::Vector3d& normal)
   {
     Surface_estimate e;
-    e.status = status;
-    e.max_curvature = max_curvature;
-    e.min_curvature = min_curvature;
-    e.gaussian_curvature = max_curvature * min_curvature;
-    e.max_direction = max_direction;
-    e.min_direction = min_direction;
-    e.normal = normal;
+    e.set_principal(status, max_curvature, min_curvature, max_direction, min_direction, normal);
     return e;
   }
 };
 
-// The estimate from the curvature of a fit's graph in coordinates divided by `scale`.
-inline Surface_estimate surface_estimate_of(Estimation_status status, const Graph_curvature<3>& curvature, double scale)
+// Sets `e` to the curvature of a fit's graph in coordinates divided by `scale`.
+inline void set_surface_estimate(Surface_estimate& e, Estimation_status status, const Graph_curvature<3>& curvature,
+                                 double scale)
 {
-  return Surface_estimate::from_principal(status, curvature.curvatures[0] / scale, curvature.curvatures[1] / scale,
-                                          curvature.directions.col(0), curvature.directions.col(1), curvature.normal);
+  e.set_principal(status, curvature.curvatures[0] / scale, curvature.curvatures[1] / scale, curvature.directions.col(0),
+                  curvature.directions.col(1), curvature.normal);
 }
 
 // True when `np` asks for any output of a curvature estimator.
@@ -126,16 +134,6 @@ void put_surface_estimate(const NamedParameters& np, VertexDescriptor&& v, const
   (void)np;
   (void)v;
   (void)e;
-}
-
-// `e` (a Surface_estimate or a Hypersurface_estimate) as a fallback's estimate:
-// with the status fallback unless it is not estimable.
-template <typename Estimate>
-Estimate as_fallback(Estimate e)
-{
-  if (e.status != Estimation_status::not_estimable)
-    e.status = Estimation_status::fallback;
-  return e;
 }
 
 // The given normal at `v` in double (read on the calling thread, see

@@ -102,14 +102,13 @@ public:
     return sum;
   }
 
-  static Hypersurface_estimate estimate(Estimation_status status, const Graph_curvature<4>& curvature, double scale)
+  static void set_estimate(Hypersurface_estimate& e, Estimation_status status, const Graph_curvature<4>& curvature,
+                           double scale)
   {
-    Hypersurface_estimate result;
-    result.status = status;
-    result.curvatures = curvature.curvatures / scale;
-    result.directions = curvature.directions;
-    result.normal = curvature.normal;
-    return result;
+    e.status = status;
+    e.curvatures = curvature.curvatures / scale;
+    e.directions = curvature.directions;
+    e.normal = curvature.normal;
   }
 
 private:

@@ -55,93 +55,109 @@ public:
 
   const Fit_settings& settings() const { return this->settings_; }
 
+  // Each fit below writes its estimate into `out`, not estimable on entry, and
+  // returns what else it found.
+
   // The fit of the settings' degree in the frame of the given `normal` (any
   // length): Hamann's paraboloid at fit_degree 2 over rings.
-  Vertex_fit<Estimate> fit(Vertex v, const Vector& normal)
+  Vertex_fit fit(Vertex v, const Vector& normal, Estimate& out)
   {
     if (this->settings_.in_ball())
-      return ball_fit(v, &normal, Vertex_normal_method::quadric_fit, this->settings_.ball_radius);
-    Vertex_fit<Estimate> result;
+      return ball_fit(v, &normal, Vertex_normal_method::quadric_fit, this->settings_.ball_radius, out);
+    Vertex_fit result;
     const double length = normal.norm();
-    if (!(length > 0) || !std::isfinite(length) || !this->samples_.gather(v, 0))
-      return finished(result);
-    const Vector unit = normal / length;
-    if (this->settings_.fits_intercept())
-      result.estimate = intercept_fit(unit);
-    else if (this->settings_.degree == 2)
-      result.estimate = curvature_fit(start_paraboloid_attempts_[this->samples_.on_border()], unit, result);
-    else
-      result.estimate = degree_fit(unit, false, result);
-    return finished(result);
+    if (length > 0 && std::isfinite(length) && this->samples_.gather(v, 0)) {
+      const Vector unit = normal / length;
+      if (this->settings_.fits_intercept())
+        intercept_fit(unit, out);
+      else if (this->settings_.degree == 2)
+        curvature_fit(start_paraboloid_attempts_[this->samples_.on_border()], unit, result, out);
+      else
+        degree_fit(unit, false, result, out);
+    }
+    finish(result);
+    return result;
   }
 
   // The fit of the settings' degree with the normal estimated by `method`: at
   // fit_degree 2 over rings, that of degree_two_fit; at fit_degree 3 and 4 and in
   // a ball, in the frame of the first-order normal.
-  Vertex_fit<Estimate> fit(Vertex v, Vertex_normal_method method)
+  Vertex_fit fit(Vertex v, Vertex_normal_method method, Estimate& out)
   {
     if (this->settings_.in_ball())
-      return ball_fit(v, nullptr, method, this->settings_.ball_radius);
-    Vertex_fit<Estimate> result;
-    if (!this->samples_.gather(v, 0))
-      return finished(result);
-    if (this->settings_.degree == 2 && !this->settings_.fits_intercept())
-      result.estimate = degree_two_curvature(v, method, result);
-    else {
-      Vector normal;
-      if (this->samples_.first_order_normal(v, method, true, normal))
-        result.estimate = this->settings_.fits_intercept() ? intercept_fit(normal) : degree_fit(normal, true, result);
+      return ball_fit(v, nullptr, method, this->settings_.ball_radius, out);
+    Vertex_fit result;
+    Vector normal;
+    if (this->samples_.gather(v, 0)) {
+      if (this->settings_.degree == 2 && !this->settings_.fits_intercept())
+        degree_two_curvature(v, method, result, out);
+      else if (this->samples_.first_order_normal(v, method, true, normal)) {
+        if (this->settings_.fits_intercept())
+          intercept_fit(normal, out);
+        else
+          degree_fit(normal, true, result, out);
+      }
     }
-    return finished(result);
+    finish(result);
+    return result;
   }
 
   // The fit of the settings' degree with an intercept over the ball of `radius` (mesh units, grown
   // as with ball_radius), in the frame of `normal` (any length), else of the first-order normal by `method`.
-  Vertex_fit<Estimate> ball_fit(Vertex v, const Vector* normal, Vertex_normal_method method, double radius)
+  Vertex_fit ball_fit(Vertex v, const Vector* normal, Vertex_normal_method method, double radius, Estimate& out)
   {
-    Vertex_fit<Estimate> result;
+    Vertex_fit result;
     Vector unit;
     if (this->samples_.gather(v, radius) && this->samples_.unit_normal(v, normal, method, unit))
       this->ball_walk(unit, [&](auto& fit, const Sampling& sampling, int reach) {
-        result.estimate = this->curvature_estimate(fit, sampling, reach, 1);
+        this->set_curvature_estimate(out, fit, sampling, reach, 1);
         return true;
       });
-    return finished(result, true);
+    finish(result, true);
+    return result;
   }
 
-  // At fit_degree 2 over rings what fit(v, *normal), or fit(v, method) where
-  // `normal` is null, gives at fit_degree 2: at fit_degree 3 and 4, for the
-  // vertices whose own fit is refused.
-  Vertex_fit<Estimate> degree_two_fit(Vertex v, const Vector* normal, Vertex_normal_method method)
+  // The estimate of ball_fit, by value (the scale selection's, at the radius it chose).
+  Estimate ball_estimate(Vertex v, const Vector* normal, Vertex_normal_method method, double radius)
   {
-    Vertex_fit<Estimate> result;
+    Estimate e;
+    ball_fit(v, normal, method, radius, e);
+    return e;
+  }
+
+  // At fit_degree 2 over rings what fit(v, *normal, out), or fit(v, method, out)
+  // where `normal` is null, gives at fit_degree 2: at fit_degree 3 and 4, for the
+  // vertices whose own fit is refused.
+  Vertex_fit degree_two_fit(Vertex v, const Vector* normal, Vertex_normal_method method, Estimate& out)
+  {
+    Vertex_fit result;
     const double length = normal != nullptr ? normal->norm() : 1.0;
-    if (!(length > 0) || !std::isfinite(length) || !this->samples_.gather(v, this->settings_.ball_radius))
-      return finished(result);
-    result.estimate = normal != nullptr ? curvature_fit(start_paraboloid_attempts_[this->samples_.on_border()],
-                                                        *normal / length, result)
-                                        : degree_two_curvature(v, method, result);
-    return finished(result);
+    if (length > 0 && std::isfinite(length) && this->samples_.gather(v, this->settings_.ball_radius)) {
+      if (normal != nullptr)
+        curvature_fit(start_paraboloid_attempts_[this->samples_.on_border()], *normal / length, result, out);
+      else
+        degree_two_curvature(v, method, result, out);
+    }
+    finish(result);
+    return result;
   }
 
   // The plane-frame fit (plane_frame_attempts), status fallback.
-  Estimate plane_frame_fit(Vertex v)
+  void plane_frame_fit(Vertex v, Estimate& out)
   {
     Vector normal;
-    Estimate estimate;
     if (!this->samples_.gather(v, this->settings_.ball_radius) ||
         !this->samples_.first_order_normal(v, Vertex_normal_method::quadric_fit, true, normal))
-      return estimate;
+      return;
     this->walk(Fit_kinds<Fit_kind::intercept_2>(), plane_frame_attempts(this->settings_, this->samples_.on_border()),
                normal, [&](auto& fit, const Sampling& sampling, int) {
                  const Graph_curvature<N> curvature =
                    graph_curvature<N>(fit.hessian(), fit.gradient(), sampling.frame.tangents, sampling.frame.normal);
                  if (!Samples::all_finite(curvature.curvatures) || !Samples::all_finite(curvature.directions))
                    return false;
-                 estimate = Neighborhood::estimate(Estimation_status::fallback, curvature, this->samples_.scale());
+                 Neighborhood::set_estimate(out, Estimation_status::fallback, curvature, this->samples_.scale());
                  return true;
                });
-    return estimate;
   }
 
   // The unit normal by `method`; false where there is none. With quadric_fit: at
@@ -180,23 +196,22 @@ private:
     std::conditional_t<D == 2, Fit_kinds<Fit_kind::gradient_3, Fit_kind::gradient_4>, Fit_kinds<Fit_kind::gradient_3>>;
   int start_rings() const { return this->settings_.start_rings(this->samples_.on_border()); }
 
-  Vertex_fit<Estimate>& finished(Vertex_fit<Estimate>& result, bool in_ball = false) const
+  void finish(Vertex_fit& result, bool in_ball = false) const
   {
     result.on_border = this->samples_.on_border();
     result.neighbors = this->samples_.neighbors(in_ball);
-    return result;
   }
 
   // The curvature at fit_degree 2 over rings with the normal of estimate_normal:
   // the gradient fit's attempts at an interior vertex with the fitted normal,
   // then (or else) Hamann's; both start on the rings the normal's fit took where
   // only the whitened test accepted it. After gather(v).
-  Estimate degree_two_curvature(Vertex v, Vertex_normal_method method, Vertex_fit<Estimate>& result)
+  void degree_two_curvature(Vertex v, Vertex_normal_method method, Vertex_fit& result, Estimate& out)
   {
     Vector normal;
     const Acceptance normal_fit = estimate_normal(v, method, true, normal);
     if (!normal_fit)
-      return Estimate();
+      return;
     result.whitened = normal_fit.whitened;
     const bool border = this->samples_.on_border();
     const int first = normal_fit.whitened ? (std::min)(normal_fit.reach, this->settings_.max_rings) : start_rings();
@@ -205,53 +220,47 @@ private:
     if (method == Vertex_normal_method::quadric_fit && !border) {
       if (!from_start)
         other = gradient_curvature_attempts(this->settings_, first);
-      const Estimate estimate = curvature_fit(from_start ? start_gradient_attempts_ : other, normal, result);
-      if (estimate.status != Estimation_status::not_estimable)
-        return estimate;
+      curvature_fit(from_start ? start_gradient_attempts_ : other, normal, result, out);
+      if (out.status != Estimation_status::not_estimable)
+        return;
     }
     if (!from_start)
       other = paraboloid_attempts(this->settings_, first);
-    return curvature_fit(from_start ? start_paraboloid_attempts_[border] : other, normal, result);
+    curvature_fit(from_start ? start_paraboloid_attempts_[border] : other, normal, result, out);
   }
 
   // The curvature of the first of `attempts` accepted in the frame of `normal`.
-  Estimate curvature_fit(const Fit_attempts& attempts, const Vector& normal, Vertex_fit<Estimate>& result)
+  void curvature_fit(const Fit_attempts& attempts, const Vector& normal, Vertex_fit& result, Estimate& out)
   {
-    Estimate estimate;
     const Acceptance accepted =
       this->walk(Curvature_kinds(), attempts, normal, [&](auto& fit, const Sampling& sampling, int reach) {
-        estimate = this->curvature_estimate(fit, sampling, reach, 1);
+        this->set_curvature_estimate(out, fit, sampling, reach, 1);
         return true;
       });
     result.whitened = result.whitened || accepted.whitened;
-    return estimate;
   }
 
   // fit_degree 3 or 4 over rings, in the frame of `normal` (first order at least).
-  Estimate degree_fit(const Vector& normal, bool estimated_normal, Vertex_fit<Estimate>& result)
+  void degree_fit(const Vector& normal, bool estimated_normal, Vertex_fit& result, Estimate& out)
   {
-    Estimate estimate;
     const int asked = first_rings_of_degree(this->settings_, this->samples_.on_border());
     const Acceptance accepted =
       this->walk(Degree_kinds(), degree_attempts(this->settings_, this->samples_.on_border(), estimated_normal), normal,
                  [&](auto& fit, const Sampling& sampling, int reach) {
-                   estimate = this->curvature_estimate(fit, sampling, reach, asked);
+                   this->set_curvature_estimate(out, fit, sampling, reach, asked);
                    return true;
                  });
     result.whitened = result.whitened || accepted.whitened;
-    return estimate;
   }
 
   // The fit of the settings' degree with an intercept over the rings, in the frame of `normal`.
-  Estimate intercept_fit(const Vector& normal)
+  void intercept_fit(const Vector& normal, Estimate& out)
   {
-    Estimate estimate;
     this->walk(Intercept_kinds(), ring_intercept_attempts(this->settings_), normal,
                [&](auto& fit, const Sampling& sampling, int reach) {
-                 estimate = this->curvature_estimate(fit, sampling, reach, 1);
+                 this->set_curvature_estimate(out, fit, sampling, reach, 1);
                  return true;
                });
-    return estimate;
   }
 
   // The neighborhood's first-order normal, or for quadric_fit that normal
