@@ -14,6 +14,8 @@ have reached one, the tile is cut again with a wider halo and run again.
 """
 
 import math
+import os
+import shutil
 import sys
 import time
 from typing import NamedTuple
@@ -458,65 +460,83 @@ def schedule(scheduler, tiles, task, again, keep, max_recuts=4, progress=None):
     return kept, sum(recuts.values()), task_seconds
 
 
-def _read_mesh(path):
-    """(vertices, faces) of an .npz (arrays `vertices` and `faces`) or an ASCII OFF of one face size."""
-    if path.endswith(".npz"):
-        with np.load(path) as arrays:
-            return arrays["vertices"], arrays["faces"]
-    if not path.endswith(".off"):
-        raise SystemExit(f"{path}: give an .npz (vertices, faces) or an ASCII .off")
-    with open(path, encoding="ascii") as f:
-        words = [w for line in f for w in line.split("#", 1)[0].split()]
-    if not words or words[0] != "OFF":
-        raise SystemExit(f"{path}: no OFF header")
-    n, m = int(words[1]), int(words[2])
-    vertices = np.array(words[4:4 + 3 * n], dtype=np.float64).reshape(n, 3)
-    rest = np.array(words[4 + 3 * n:], dtype=np.int64)
-    k = int(rest[0]) if m else 3
-    if len(rest) != m * (k + 1) or (m and np.any(rest[::k + 1] != k)):
-        raise SystemExit(f"{path}: the faces are not {m} polygons of {k} vertices")
-    return vertices, rest.reshape(m, k + 1)[:, 1:]
-
-
 def main(argv=None):
     import argparse
+    import tempfile
+
+    from . import streamed
     parser = argparse.ArgumentParser(
         prog="python3 -m curvature_estimation.tiles",
-        description="Curvature of a surface mesh in tiles with halos, serially or on Dask: the values of "
-                    "mesh_curvatures (and of the tool) on the whole mesh, bit for bit.")
-    parser.add_argument("input", help="an .npz of arrays vertices (n, 3) and faces (m, k), or an ASCII .off")
-    parser.add_argument("-o", "--output", help="an .npz of the columns (k_max, k_min, mean, gaussian, d_max, "
-                                               "d_min, status); without it, the summary only")
+        description="Curvature of a surface mesh or a point set in tiles with halos, serially or on Dask: the "
+                    "values of mesh_curvatures (and of the tool) on the whole input, bit for bit. A file is read "
+                    "in chunks and cut into tiles in a work directory (curvature_estimation.streamed).")
+    parser.add_argument("input", help="a binary little-endian .ply (a mesh, or a point set without faces), an ASCII "
+                                      ".off, an .xyz point set, or an .npz of arrays vertices (n, 3) and faces (m, k)")
+    parser.add_argument("-o", "--output", help="a .ply, or a directory of .npy columns (k_max, k_min, mean, gaussian, "
+                                               "d_max, d_min, status); for an .npz input, an .npz; without it, the "
+                                               "summary only")
     parser.add_argument("-m", "--method", default="paraboloid")
-    parser.add_argument("--tiles", default="3x3", help="the grid in x and y, e.g. 4x4")
+    parser.add_argument("--tiles", default="3x3", help="the grid in x and y, e.g. 4x4, or a number of vertices a tile")
+    parser.add_argument("--work-dir", help="where a file's tiles and results go (a new directory; default: a "
+                                           "temporary one, removed at the end)")
     parser.add_argument("--scheduler", default="local",
                         help="a Dask scheduler's address, 'local' (a LocalCluster of 2 processes) or 'serial'")
     parser.add_argument("--halo-rings", type=int,
                         help="cut with this many rings first (default: the method's halo; a narrower one is widened)")
     parser.add_argument("--threads", type=int, default=1, help="each task's threads")
-    for option in ("rings", "order", "fit-degree", "degree", "monge-degree"):
+    for option in ("rings", "order", "fit-degree", "degree", "monge-degree", "neighbors"):
         parser.add_argument("--" + option, type=int)
     parser.add_argument("--radius", help="a length, or Nx for N mean edge lengths of the whole mesh")
+    parser.add_argument("--unsigned", action="store_true", help="a point set without normals: H >= 0 at each point")
     a = parser.parse_args(argv)
-    vertices, faces = _read_mesh(a.input)
-    settings = {k: v for k, v in (("rings", a.rings), ("order", a.order), ("fit_degree", a.fit_degree),
-                                  ("degree", a.degree), ("monge_degree", a.monge_degree)) if v is not None}
-    if a.radius is not None:
-        settings["radius"] = a.radius if a.radius.endswith("x") else float(a.radius)
     halo = None
     if a.halo_rings is not None:
         if a.radius is not None:
             parser.error("--halo-rings is for ring neighborhoods, not with --radius")
         halo = Halo(a.halo_rings)
     scheduler = {"local": None, "serial": "serial"}.get(a.scheduler, a.scheduler)
-    tiles = tuple(int(t) for t in a.tiles.split("x"))
-    result, run = run_tiles(vertices, faces, a.method, tiles=tiles, halo=halo, scheduler=scheduler,
-                            threads=a.threads, progress=sys.stderr.isatty() or None, **settings)
-    if a.output:
-        np.savez(a.output, **result._asdict())
-    counts = np.bincount(result.status, minlength=len(Status))
-    print(f"{len(vertices)} vertices: {run.summary()}; "
-          + ", ".join(f"{s.name} {counts[s]}" for s in Status))
+    tiles = tuple(int(t) for t in a.tiles.split("x")) if "x" in a.tiles else int(a.tiles)
+    radius = a.radius if a.radius is None or a.radius.endswith("x") else float(a.radius)
+    progress = sys.stderr.isatty() or None
+    if a.input.endswith(".npz"):
+        with np.load(a.input) as arrays:
+            vertices, faces = arrays["vertices"], arrays["faces"]
+        settings = _mesh_options(a, radius)
+        result, run = run_tiles(vertices, faces, a.method, tiles=tiles, halo=halo, scheduler=scheduler,
+                                threads=a.threads, progress=progress, **settings)
+        if a.output:
+            np.savez(a.output, **result._asdict())
+        counts = np.bincount(result.status, minlength=len(Status))
+    else:
+        work = a.work_dir or tempfile.mkdtemp(prefix="curvature-tiles-")
+        if not a.work_dir:
+            os.rmdir(work)  # write_tiles makes it
+        try:
+            if streamed.input_kind(a.input) == "mesh":
+                settings = _mesh_options(a, radius)
+            else:
+                settings = {k: v for k, v in (("number_of_neighbors", a.neighbors), ("neighbor_radius", radius),
+                                              ("fit_degree", a.fit_degree)) if v is not None}
+                settings["unsigned"] = a.unsigned
+            streamed.write_tiles(a.input, work, tiles, a.method, halo, **settings)
+            done = streamed.run_directory(work, scheduler, a.output, threads=a.threads, progress=progress)
+            run = done.run
+            counts = np.bincount(np.load(os.path.join(done.columns, "status.npy"), mmap_mode="r"),
+                                 minlength=len(Status))
+        except streamed.InputError as error:
+            raise SystemExit(f"error: {error}") from None
+        finally:
+            if not a.work_dir:
+                shutil.rmtree(work, ignore_errors=True)
+    print(f"{counts.sum()} vertices: {run.summary()}; " + ", ".join(f"{s.name} {counts[s]}" for s in Status))
+
+
+def _mesh_options(a, radius):
+    settings = {k: v for k, v in (("rings", a.rings), ("order", a.order), ("fit_degree", a.fit_degree),
+                                  ("degree", a.degree), ("monge_degree", a.monge_degree)) if v is not None}
+    if radius is not None:
+        settings["radius"] = radius
+    return settings
 
 
 if __name__ == "__main__":
