@@ -8,7 +8,6 @@ the same on a LocalCluster of 2 workers, one of them killed mid-run; bad files g
 error and no work directory."""
 
 import os
-import signal
 
 import numpy as np
 import pytest
@@ -17,7 +16,7 @@ import curvature_estimation as ce
 from conftest import grid_graph, torus, write_off
 from curvature_estimation import streamed as S
 from curvature_estimation import tiles as T
-from test_tiles import assert_same, differing
+from test_tiles import assert_same, case_id, differing, whole, with_a_worker_killed
 
 CASES = [
     ("paraboloid", {}),
@@ -31,11 +30,6 @@ CASES = [
     ("jet", {}),
     ("jet", {"radius": "3x"}),
 ]
-
-
-def case_id(case):
-    method, kwargs = case
-    return method + "".join(f"-{k}={v}" for k, v in kwargs.items())
 
 
 def write_ply(path, vertices, faces=None, normals=None, coordinate="<f8", index="<i4"):
@@ -57,8 +51,8 @@ def write_ply(path, vertices, faces=None, normals=None, coordinate="<f8", index=
 
 
 @pytest.fixture(scope="module")
-def mesh():
-    return grid_graph(n=224, jitter=0.4)  # 50,176 vertices
+def mesh(tiles_mesh):
+    return tiles_mesh  # the mesh `whole` caches the results of
 
 
 @pytest.fixture(scope="module")
@@ -72,16 +66,6 @@ def ply(mesh, tmp_path_factory):
 def small_chunks(monkeypatch):
     """Chunks far smaller than the inputs: every pass runs over many chunks."""
     monkeypatch.setattr(S, "CHUNK", 4096)
-
-
-_whole = {}
-
-
-def whole(mesh, method, kwargs):
-    key = case_id((method, kwargs))
-    if key not in _whole:
-        _whole[key] = ce.mesh_curvatures(*mesh, method, threads=1, **kwargs)
-    return _whole[key]
 
 
 def tiled(path, directory, tiles, method="paraboloid", scheduler="serial", halo=None, **kwargs):
@@ -232,20 +216,8 @@ def test_the_command_writes_a_ply(mesh, ply, tmp_path, capsys):
 def test_dask_with_a_worker_killed_mid_run(mesh, ply, tmp_path):
     """The streamed tiles on a LocalCluster of 2 worker processes, one killed once the first
     tile is in: its tasks run again elsewhere (a result file is written whole or not at all)."""
-    distributed = pytest.importorskip("distributed")
     S.write_tiles(ply, str(tmp_path / "work"), (4, 4), "paraboloid")
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
-                                  dashboard_address=None) as cluster, distributed.Client(cluster) as c:
-        victim = next(iter(c.run(os.getpid).values()))
-        killed_after = []
-
-        def kill_once(done, total, vertices):
-            if not killed_after:
-                os.kill(victim, signal.SIGKILL)
-                killed_after.append(done)
-
-        done = S.run_directory(str(tmp_path / "work"), c, progress=kill_once)
-        assert killed_after == [1] and done.run.tiles == 16
-        log = c.run_on_scheduler(lambda dask_scheduler: [t[1:3] for t in dask_scheduler.transition_log])
-        assert ("processing", "released") in log
+    done = with_a_worker_killed(lambda client, progress: S.run_directory(str(tmp_path / "work"), client,
+                                                                         progress=progress))
+    assert done.run.tiles == 16
     assert_same(S.read_columns(done.columns), whole(mesh, "paraboloid", {}))
