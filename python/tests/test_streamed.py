@@ -221,3 +221,15 @@ def test_dask_with_a_worker_killed_mid_run(mesh, ply, tmp_path):
                                                                          progress=progress))
     assert done.run.tiles == 16
     assert_same(S.read_columns(done.columns), whole(mesh, "paraboloid", {}))
+
+
+def test_the_command_on_an_xyz_writes_npy_columns(point_set, tmp_path, capsys):
+    _, points, normals = point_set
+    rows = np.column_stack([points, normals])
+    (tmp_path / "points.xyz").write_text("\n".join(" ".join(repr(float(x)) for x in row) for row in rows) + "\n")
+    output = tmp_path / "columns"
+    T.main([str(tmp_path / "points.xyz"), "--tiles", "6000", "--scheduler", "serial", "-o", str(output)])
+    assert f"{len(points)} vertices" in capsys.readouterr().out
+    assert_same(S.read_columns(str(output)), ce.point_set_curvatures(points, normals=normals, threads=1))
+    with pytest.raises(FileExistsError):  # columns are never written over an existing directory
+        T.main([str(tmp_path / "points.xyz"), "--scheduler", "serial", "-o", str(output)])
