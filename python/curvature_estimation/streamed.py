@@ -266,25 +266,28 @@ def open_input(path, directory):
 
 
 class TileFile(NamedTuple):
-    """A tile written to the work directory: its cell, box, halo, file and vertex count."""
+    """A tile written to the work directory: its cell, box, halo, file, vertices and owned vertices."""
 
     cell: tuple
     box: tuple
     halo: T.Halo
     path: str
     vertices: int
+    owned: int
 
 
 def _scan(source, tiles):
     """Pass 1: the grid, each vertex chunk's bounds, the longest edge in x and y; checks the faces."""
     lo, hi = np.full(2, np.inf), np.full(2, -np.inf)
     for a in range(0, source.n, CHUNK):
-        xy = source.points(a, a + CHUNK)[:, :2]
-        xy = xy[np.isfinite(xy).all(axis=1)]
-        if len(xy):
-            lo, hi = np.minimum(lo, xy.min(axis=0)), np.maximum(hi, xy.max(axis=0))
+        points = source.points(a, a + CHUNK)
+        if not np.isfinite(points).all():
+            # A tile is owned by position: a vertex without one would be in no tile.
+            raise InputError(f"{source.path}: a vertex after vertex {a} has a coordinate that is not finite")
+        if len(points):
+            lo, hi = np.minimum(lo, points[:, :2].min(axis=0)), np.maximum(hi, points[:, :2].max(axis=0))
     if not np.all(lo <= hi):
-        raise InputError(f"{source.path}: no finite vertex")
+        raise InputError(f"{source.path}: no vertex")
     longest = 0.0
     for a in range(0, source.m, CHUNK):
         faces = source.faces(a, a + CHUNK)
@@ -389,7 +392,8 @@ def _point_halo(source, tiles, lo, size, settings):
 def _write_tile(directory, cell, box, halo, arrays):
     path = os.path.join(directory, "tiles", f"{cell[0]}_{cell[1]}.r{halo.rings}.npz")
     np.savez(path, cell=cell, box=box, halo=np.array(halo, dtype=np.float64), **arrays)
-    return TileFile(tuple(int(c) for c in cell), tuple(box), halo, path, len(arrays["vertices"]))
+    return TileFile(tuple(int(c) for c in cell), tuple(box), halo, path, len(arrays["vertices"]),
+                    int(np.count_nonzero(arrays["owned"])))
 
 
 def _cut_mesh_tile(directory, candidates, cell, box, halo, owned):
@@ -435,7 +439,7 @@ def _cut_all(source, directory, manifest, cells):
                 result.append(_cut_mesh_tile(directory, candidates, cell, box, halo, owned))
         else:
             tile = _cut_point_tile(directory, source, three[0], cell, box, halo, tiles, lo, size)
-            if np.load(tile.path)["owned"].any():
+            if tile.owned:
                 result.append(tile)
             else:
                 os.remove(tile.path)
@@ -647,7 +651,7 @@ def run_directory(directory, scheduler="serial", output=None, max_recuts=4, thre
     results = os.path.join(directory, "results")
     os.makedirs(results, exist_ok=True)
     tiles = [TileFile(tuple(t["cell"]), tuple(t["box"]), T.Halo(*t["halo"]), os.path.join(directory, t["path"]),
-                      t["vertices"]) for t in manifest["tile_files"]]
+                      t["vertices"], t["owned"]) for t in manifest["tile_files"]]
     source = None
     kept_results = {}
 
@@ -668,6 +672,9 @@ def run_directory(directory, scheduler="serial", output=None, max_recuts=4, thre
             return len(r["vertices"])
 
     kept, recuts, task_seconds = T.schedule(scheduler, tiles, task, again, keep, max_recuts, progress)
+    owned = sum(t.owned for t in kept)
+    if owned != manifest["vertices"]:
+        raise RuntimeError(f"{directory}: the tiles own {owned} vertices of {manifest['vertices']}")
     columns = _stitch(directory, manifest, [kept_results[t.cell] for t in kept])
     if output is not None:
         if output.endswith(".ply"):

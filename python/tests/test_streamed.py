@@ -175,6 +175,8 @@ def test_a_point_set_without_normals_is_refused_unless_unsigned(point_set, tmp_p
     (lambda b: b.replace(b"end_header", b"end_heaven"), "not a PLY"),
     (lambda b: b.replace(b"property double y", b"property doubel y"), "unknown PLY type"),
     (lambda b: b + b"\0" * 10, "bytes"),
+    (lambda b: b[:b.index(b"end_header\n") + 11] + np.float64(np.nan).tobytes() + b[b.index(b"end_header\n") + 19:],
+     "not finite"),
 ])
 def test_a_bad_file_gives_one_error_and_no_output(ply, tmp_path, damage, message):
     bad = tmp_path / "bad.ply"
