@@ -381,12 +381,12 @@ def _owned_mask(points, tiles, lo, size, cell):
 
 
 def _point_halo(source, tiles, lo, size, settings):
-    """The distance a point set's tile reaches at first: the radius, or about twice the distance of
-    the k-th neighbor on a surface of the bounds' area (checked and widened at run time)."""
+    """The distance a point set's tile reaches at first: the radius, or three times the distance of
+    the k-th neighbor on a flat surface of the bounds' area (checked and widened at run time)."""
     if settings.get("neighbor_radius") is not None:
         return float(settings["neighbor_radius"])
     k = settings.get("number_of_neighbors") or {2: 16, 3: 32, 4: 64}[settings.get("fit_degree", 2)]
-    return 2.0 * float(np.sqrt(size[0] * size[1] / max(source.n, 1) * k / np.pi))
+    return 3.0 * float(np.sqrt(size[0] * size[1] / max(source.n, 1) * k / np.pi))
 
 
 def _write_tile(directory, cell, box, halo, arrays):
@@ -548,12 +548,13 @@ def _point_check(arrays, settings, status):
         reach = np.where(ok, radius, 2.0 * radius)
     else:
         k = settings.get("number_of_neighbors") or {2: 16, 3: 32, 4: 64}[settings.get("fit_degree", 2)]
-        far = min(_POINT_WIDENING * k + 1, len(points))
-        distance, _ = cKDTree(points).query(points[owned], k=far)
-        distance = distance.reshape(len(owned), -1)
-        reach = np.where(ok, distance[:, min(k, far - 1)], distance[:, -1])
-        if far < _POINT_WIDENING * k + 1:
-            reach[:] = np.inf  # fewer points in the tile than a neighborhood may read
+        if len(points) <= _POINT_WIDENING * k:
+            return owned  # fewer points in the tile than a neighborhood may read
+        tree = cKDTree(points)
+        reach = np.empty(len(owned))
+        for where, count in ((ok, k + 1), (~ok, _POINT_WIDENING * k + 1)):  # the point itself first
+            if where.any():
+                reach[where] = tree.query(points[owned[where]], k=[count])[0][:, 0]
     return owned[T.box_gap(points[owned], box, halo) <= reach]
 
 
