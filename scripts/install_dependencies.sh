@@ -32,6 +32,8 @@ PACKAGES=(
   # Tiles on Dask (python/curvature_estimation/tiles.py): the distributed scheduler, whose
   # LocalCluster of worker processes on localhost runs the tests of the tiled runs.
   python3-dask python3-distributed
+  # The streamed tiles' check of a point set's neighborhoods (python/curvature_estimation/streamed.py).
+  python3-scipy
 )
 if [ "${1:-}" = "--report" ]; then
   # /usr/bin/time: wall time and peak memory of benchmark/tool_end_to_end.sh and

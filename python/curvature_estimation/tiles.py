@@ -14,6 +14,8 @@ have reached one, the tile is cut again with a wider halo and run again.
 """
 
 import math
+import os
+import shutil
 import sys
 import time
 from typing import NamedTuple
@@ -97,22 +99,39 @@ def halo_of(method="paraboloid", *, rings=None, radius=None, order=None, fit_deg
     raise ValueError(f"unknown method {method!r}")
 
 
+def first_edges(faces, n):
+    """The edges of `faces` (m, k) over n vertices where the faces first meet them: their
+    positions in faces.ravel() (ascending), sources and targets."""
+    source = faces.ravel()
+    target = np.roll(faces, -1, axis=1).ravel()
+    key = np.minimum(source, target).astype(np.int64) * np.int64(n) + np.maximum(source, target)
+    _, first = np.unique(key, return_index=True)
+    first.sort()
+    return first, source[first], target[first]
+
+
+def edge_lengths(d):
+    """|d| of each row of d (edges, 3) as Eigen's norm of a Vector3d sums it at -O3:
+    (x^2 + y^2) + z^2 (checked on 1e6 random vectors; x^2 + (y^2 + z^2) differs in 12% of them)."""
+    return np.sqrt((d[:, 0] * d[:, 0] + d[:, 1] * d[:, 1]) + d[:, 2] * d[:, 2])
+
+
+def relative_radius(radius):
+    """N of a radius "Nx" (N mean edge lengths), None for an absolute one."""
+    if not isinstance(radius, str):
+        return None
+    if not radius.endswith("x"):
+        raise ValueError(f"radius must be a length or a string 'Nx', got {radius!r}")
+    return float(radius[:-1])
+
+
 def mean_edge_length(vertices, faces):
     """The mean edge length of the mesh of (vertices, faces) as the library computes it
     for radius "Nx" (mean_edge_length.h), bit for bit: the edges in the order the faces
     first meet them, each |source - target| as Eigen's norm sums it, summed in that order."""
     vertices = np.asarray(vertices, dtype=np.float64)
-    faces = np.asarray(faces)
-    source = faces.ravel()
-    target = np.roll(faces, -1, axis=1).ravel()
-    n = np.int64(len(vertices))
-    key = np.minimum(source, target).astype(np.int64) * n + np.maximum(source, target)
-    _, first = np.unique(key, return_index=True)
-    first.sort()
-    d = vertices[source[first]] - vertices[target[first]]
-    # Eigen's norm of a Vector3d at -O3: (x^2 + y^2) + z^2 (checked on 1e6 random vectors;
-    # x^2 + (y^2 + z^2) differs in 12% of them).
-    length = np.sqrt((d[:, 0] * d[:, 0] + d[:, 1] * d[:, 1]) + d[:, 2] * d[:, 2])
+    _, source, target = first_edges(np.asarray(faces), len(vertices))
+    length = edge_lengths(vertices[source] - vertices[target])
     length = length[np.isfinite(length)]
     return float(np.cumsum(length)[-1] / len(length)) if len(length) else 0.0  # cumsum: in order
 
@@ -132,14 +151,24 @@ class Tile(NamedTuple):
     complete: np.ndarray
 
 
-def _cells(xy, tiles):
-    lo, hi = xy.min(axis=0), xy.max(axis=0)
-    size = np.where(hi > lo, hi - lo, 1.0)
+def grid_of(lo, hi):
+    """The origin and size of the grid over the bounds lo, hi in x and y."""
+    lo, hi = np.asarray(lo, dtype=np.float64), np.asarray(hi, dtype=np.float64)
+    return lo, np.where(hi > lo, hi - lo, 1.0)
+
+
+def cell_of(xy, tiles, lo, size):
+    """The (i, j) of the cell of each point of xy (n, 2) on the grid."""
     cell = np.floor((xy - lo) / size * np.array(tiles)).astype(np.int64)
-    return np.minimum(cell, np.array(tiles) - 1), lo, size
+    return np.clip(cell, 0, np.array(tiles) - 1)
 
 
-def _box(cell, tiles, lo, size):
+def _cells(xy, tiles):
+    lo, size = grid_of(xy.min(axis=0), xy.max(axis=0))
+    return cell_of(xy, tiles, lo, size), lo, size
+
+
+def box_of(cell, tiles, lo, size):
     (i, j), (nx, ny) = cell, tiles
     # Outer sides at infinity: no vertex lies beyond them.
     x0 = lo[0] + size[0] * i / nx if i > 0 else -math.inf
@@ -183,7 +212,7 @@ def cut_tiles(vertices, faces, tiles=(3, 3), halo=Halo(1)):
         for j in range(tiles[1]):
             owned = (cell[:, 0] == i) & (cell[:, 1] == j)
             if owned.any():
-                result.append(_cut(vertices, faces, degree, (i, j), _box((i, j), tiles, lo, size), owned, halo))
+                result.append(_cut(vertices, faces, degree, (i, j), box_of((i, j), tiles, lo, size), owned, halo))
     return result
 
 
@@ -211,7 +240,7 @@ def _ring_distance(faces, start, limit):
     return distance
 
 
-def _box_gap(points, box, halo):
+def box_gap(points, box, halo):
     """Per point, its distance in x and y to the edge of the tile's complete region (the
     cell widened by halo.distance): no incomplete vertex is nearer, in 3D."""
     x0, x1, y0, y1 = box
@@ -230,7 +259,7 @@ def check_tile(tile, points, status, needed):
     neighbors' normals (gauss-map); the module reports no reach per vertex."""
     owned = np.flatnonzero(tile.owned)
     if needed.distance > 0:
-        gap = _box_gap(points[owned], tile.box, tile.halo)
+        gap = box_gap(points[owned], tile.box, tile.halo)
         reach = np.where(status[owned] == Status.ok, needed.distance,
                          _BALL_GROWTH_FOR_CONDITIONING * needed.distance)
         suspect = gap < reach
@@ -360,120 +389,154 @@ def run_tiles(vertices, faces, method="paraboloid", *, tiles=(3, 3), halo=None, 
     start = time.monotonic()
     vertices = np.ascontiguousarray(vertices, dtype=np.float64)
     faces = np.ascontiguousarray(faces, dtype=np.int64)
-    radius = settings.get("radius")
-    if isinstance(radius, str):
-        if not radius.endswith("x"):
-            raise ValueError(f"radius must be a length or a string 'Nx', got {radius!r}")
-        settings["radius"] = float(radius[:-1]) * mean_edge_length(vertices, faces)
+    factor = relative_radius(settings.get("radius"))
+    if factor is not None:
+        settings["radius"] = factor * mean_edge_length(vertices, faces)
     needed = halo_of(method, **settings)
-    if progress is True:
-        progress = _progress_printer(sys.stderr)
 
     n = len(vertices)
     out = MeshCurvatures(*(np.empty(n) for _ in range(4)), np.empty((n, 3)), np.empty((n, 3)),
                          np.empty(n, dtype=np.uint8))
     cut = cut_tiles(vertices, faces, tiles, halo or needed)
+
+    def task(driver, tile):
+        return driver.submit(run_tile, vertices[tile.vertices], tile, method, settings, needed, threads)
+
+    def keep(tile, result):
+        owned, values, _, _ = result
+        for column, value in zip(out, values):
+            column[owned] = value
+        return len(owned)
+
+    kept, recuts, task_seconds = schedule(scheduler, cut, task, lambda tile: recut(vertices, faces, tile,
+                                                                                     tile.halo.wider(needed)),
+                                          keep, max_recuts, progress)
+    return out, TiledRun(len(cut), recuts, sum(len(t.vertices) for t in kept) / n - 1, time.monotonic() - start,
+                         task_seconds, {t.cell: t.halo for t in kept})
+
+
+def schedule(scheduler, tiles, task, again, keep, max_recuts=4, progress=None):
+    """Runs every tile as task(driver, tile) (a future of the driver of `scheduler`, see
+    run_tiles) whose result ends with the global indices the check flags and the task's
+    seconds; a flagged tile is replaced by again(tile) and run again, at most max_recuts
+    times per cell (then RuntimeError), the others go to keep(tile, result), which returns
+    the vertices it stitched. Returns (the tiles kept, the re-cuts, the tasks' seconds)."""
+    if progress is True:
+        progress = _progress_printer(sys.stderr)
     driver, to_close = _driver(scheduler)
-    futures = {}
+    futures, recuts, kept = {}, {}, []
+    stitched = 0
+    task_seconds = 0.0
 
     def submit(tile):
-        future = driver.submit(run_tile, vertices[tile.vertices], tile, method, settings, needed, threads)
+        future = task(driver, tile)
         futures[future] = tile
         return future
 
-    recuts, halos = {}, {}
-    done = tile_vertices = stitched = 0
-    task_seconds = 0.0
     try:
-        pending = [submit(tile) for tile in cut]
+        pending = [submit(tile) for tile in tiles]
         while pending:
-            again = []
+            again_pending = []
             for future in driver.completed(pending):
                 tile = futures.pop(future)
-                owned, values, flagged, seconds = driver.result(future)
+                result = driver.result(future)
+                flagged, seconds = result[-2:]
                 task_seconds += seconds
                 if len(flagged):
                     recuts[tile.cell] = recuts.get(tile.cell, 0) + 1
                     if recuts[tile.cell] > max_recuts:
                         raise RuntimeError(f"tile {tile.cell}: {len(flagged)} vertices still flagged with the halo "
                                            f"{tile.halo}, after {max_recuts} re-cuts")
-                    again.append(submit(recut(vertices, faces, tile, tile.halo.wider(needed))))
+                    again_pending.append(submit(again(tile)))
                     continue
-                for column, value in zip(out, values):
-                    column[owned] = value
-                done += 1
-                stitched += len(owned)
-                tile_vertices += len(tile.vertices)
-                halos[tile.cell] = tile.halo
+                stitched += keep(tile, result)
+                kept.append(tile)
                 if progress:
-                    progress(done, len(cut), stitched)
-            pending = again
+                    progress(len(kept), len(tiles), stitched)
+            pending = again_pending
     finally:
         for resource in to_close:
             resource.close()
-    return out, TiledRun(len(cut), sum(recuts.values()), tile_vertices / n - 1, time.monotonic() - start,
-                         task_seconds, halos)
-
-
-def _read_mesh(path):
-    """(vertices, faces) of an .npz (arrays `vertices` and `faces`) or an ASCII OFF of one face size."""
-    if path.endswith(".npz"):
-        with np.load(path) as arrays:
-            return arrays["vertices"], arrays["faces"]
-    if not path.endswith(".off"):
-        raise SystemExit(f"{path}: give an .npz (vertices, faces) or an ASCII .off")
-    with open(path, encoding="ascii") as f:
-        words = [w for line in f for w in line.split("#", 1)[0].split()]
-    if not words or words[0] != "OFF":
-        raise SystemExit(f"{path}: no OFF header")
-    n, m = int(words[1]), int(words[2])
-    vertices = np.array(words[4:4 + 3 * n], dtype=np.float64).reshape(n, 3)
-    rest = np.array(words[4 + 3 * n:], dtype=np.int64)
-    k = int(rest[0]) if m else 3
-    if len(rest) != m * (k + 1) or (m and np.any(rest[::k + 1] != k)):
-        raise SystemExit(f"{path}: the faces are not {m} polygons of {k} vertices")
-    return vertices, rest.reshape(m, k + 1)[:, 1:]
+    return kept, sum(recuts.values()), task_seconds
 
 
 def main(argv=None):
     import argparse
+    import tempfile
+
+    from . import streamed
     parser = argparse.ArgumentParser(
         prog="python3 -m curvature_estimation.tiles",
-        description="Curvature of a surface mesh in tiles with halos, serially or on Dask: the values of "
-                    "mesh_curvatures (and of the tool) on the whole mesh, bit for bit.")
-    parser.add_argument("input", help="an .npz of arrays vertices (n, 3) and faces (m, k), or an ASCII .off")
-    parser.add_argument("-o", "--output", help="an .npz of the columns (k_max, k_min, mean, gaussian, d_max, "
-                                               "d_min, status); without it, the summary only")
+        description="Curvature of a surface mesh or a point set in tiles with halos, serially or on Dask: the "
+                    "values of mesh_curvatures (and of the tool) on the whole input, bit for bit. A file is read "
+                    "in chunks and cut into tiles in a work directory (curvature_estimation.streamed).")
+    parser.add_argument("input", help="a binary little-endian .ply (a mesh, or a point set without faces), an ASCII "
+                                      ".off, an .xyz point set, or an .npz of arrays vertices (n, 3) and faces (m, k)")
+    parser.add_argument("-o", "--output", help="a .ply, or a directory of .npy columns (k_max, k_min, mean, gaussian, "
+                                               "d_max, d_min, status); for an .npz input, an .npz; without it, the "
+                                               "summary only")
     parser.add_argument("-m", "--method", default="paraboloid")
-    parser.add_argument("--tiles", default="3x3", help="the grid in x and y, e.g. 4x4")
+    parser.add_argument("--tiles", default="3x3", help="the grid in x and y, e.g. 4x4, or a number of vertices a tile")
+    parser.add_argument("--work-dir", help="where a file's tiles and results go (a new directory; default: a "
+                                           "temporary one, removed at the end)")
     parser.add_argument("--scheduler", default="local",
                         help="a Dask scheduler's address, 'local' (a LocalCluster of 2 processes) or 'serial'")
     parser.add_argument("--halo-rings", type=int,
                         help="cut with this many rings first (default: the method's halo; a narrower one is widened)")
     parser.add_argument("--threads", type=int, default=1, help="each task's threads")
-    for option in ("rings", "order", "fit-degree", "degree", "monge-degree"):
+    for option in ("rings", "order", "fit-degree", "degree", "monge-degree", "neighbors"):
         parser.add_argument("--" + option, type=int)
     parser.add_argument("--radius", help="a length, or Nx for N mean edge lengths of the whole mesh")
+    parser.add_argument("--unsigned", action="store_true", help="a point set without normals: H >= 0 at each point")
     a = parser.parse_args(argv)
-    vertices, faces = _read_mesh(a.input)
-    settings = {k: v for k, v in (("rings", a.rings), ("order", a.order), ("fit_degree", a.fit_degree),
-                                  ("degree", a.degree), ("monge_degree", a.monge_degree)) if v is not None}
-    if a.radius is not None:
-        settings["radius"] = a.radius if a.radius.endswith("x") else float(a.radius)
     halo = None
     if a.halo_rings is not None:
         if a.radius is not None:
             parser.error("--halo-rings is for ring neighborhoods, not with --radius")
         halo = Halo(a.halo_rings)
     scheduler = {"local": None, "serial": "serial"}.get(a.scheduler, a.scheduler)
-    tiles = tuple(int(t) for t in a.tiles.split("x"))
-    result, run = run_tiles(vertices, faces, a.method, tiles=tiles, halo=halo, scheduler=scheduler,
-                            threads=a.threads, progress=sys.stderr.isatty() or None, **settings)
-    if a.output:
-        np.savez(a.output, **result._asdict())
-    counts = np.bincount(result.status, minlength=len(Status))
-    print(f"{len(vertices)} vertices: {run.summary()}; "
-          + ", ".join(f"{s.name} {counts[s]}" for s in Status))
+    tiles = tuple(int(t) for t in a.tiles.split("x")) if "x" in a.tiles else int(a.tiles)
+    radius = a.radius if a.radius is None or a.radius.endswith("x") else float(a.radius)
+    progress = sys.stderr.isatty() or None
+    if a.input.endswith(".npz"):
+        with np.load(a.input) as arrays:
+            vertices, faces = arrays["vertices"], arrays["faces"]
+        settings = _mesh_options(a, radius)
+        result, run = run_tiles(vertices, faces, a.method, tiles=tiles, halo=halo, scheduler=scheduler,
+                                threads=a.threads, progress=progress, **settings)
+        if a.output:
+            np.savez(a.output, **result._asdict())
+        counts = np.bincount(result.status, minlength=len(Status))
+    else:
+        work = a.work_dir or tempfile.mkdtemp(prefix="curvature-tiles-")
+        if not a.work_dir:
+            os.rmdir(work)  # write_tiles makes it
+        try:
+            if streamed.input_kind(a.input) == "mesh":
+                settings = _mesh_options(a, radius)
+            else:
+                settings = {k: v for k, v in (("number_of_neighbors", a.neighbors), ("neighbor_radius", radius),
+                                              ("fit_degree", a.fit_degree)) if v is not None}
+                settings["unsigned"] = a.unsigned
+            streamed.write_tiles(a.input, work, tiles, a.method, halo, **settings)
+            done = streamed.run_directory(work, scheduler, a.output, threads=a.threads, progress=progress)
+            run = done.run
+            counts = np.bincount(np.load(os.path.join(done.columns, "status.npy"), mmap_mode="r"),
+                                 minlength=len(Status))
+        except streamed.InputError as error:
+            raise SystemExit(f"error: {error}") from None
+        finally:
+            if not a.work_dir:
+                shutil.rmtree(work, ignore_errors=True)
+    print(f"{counts.sum()} vertices: {run.summary()}; " + ", ".join(f"{s.name} {counts[s]}" for s in Status))
+
+
+def _mesh_options(a, radius):
+    settings = {k: v for k, v in (("rings", a.rings), ("order", a.order), ("fit_degree", a.fit_degree),
+                                  ("degree", a.degree), ("monge_degree", a.monge_degree)) if v is not None}
+    if radius is not None:
+        settings["radius"] = radius
+    return settings
 
 
 if __name__ == "__main__":

@@ -109,6 +109,12 @@ def torus(major=16, minor=10, R=1.0, r=0.4, quads=False):
 
 
 @pytest.fixture(scope="session")
+def tiles_mesh():
+    """The jittered grid the tiles are tested on: 50,176 vertices."""
+    return grid_graph(n=224, jitter=0.4)
+
+
+@pytest.fixture(scope="session")
 def bunny():
     path = bunny_path()
     if not path.is_file():
