@@ -167,14 +167,18 @@ public:
     return std::sqrt(squared);
   }
 
-  // A q for A = T^T, as Eigen's product sums it; in R^3 by columns in place (Eigen's
-  // assignment is a call per sample there; two scalar rows stall the packed reads of x).
+  // A q for A = T^T, as Eigen's product sums it; in R^3 by columns, one assignment per
+  // column (Eigen's assignment of the whole sum is a call per sample; two scalar rows
+  // stall the packed reads of x).
   static CGAL_CURVATURE_ESTIMATION_INLINE Eigen::Matrix<double, D, 1>
   tangent_coordinates(const Eigen::Matrix<double, D, N>& A, const Vector& q)
   {
-    if constexpr (N == 3)
-      return A.col(0) * q[0] + A.col(1) * q[1] + A.col(2) * q[2];
-    else
+    if constexpr (N == 3) {
+      Eigen::Matrix<double, D, 1> x = A.col(0) * q[0];
+      x += A.col(1) * q[1];
+      x += A.col(2) * q[2];
+      return x;
+    } else
       return A * q;
   }
 
