@@ -499,35 +499,6 @@ TEST(PointSetCurvatures, PointSet3AndPairRanges)
   }
 }
 
-// The k nearest of the search are the k nearest by brute force (CGAL's radius query with a cap would not give them).
-TEST(PointSetCurvatures, NearestNeighborsAreTheTrueNearest)
-{
-  std::mt19937 gen(17);
-  std::vector<Eigen::Vector3d> points;
-  for (int i = 0; i < 3000; ++i)
-    points.emplace_back(ce_test::uniform_symmetric(gen), ce_test::uniform_symmetric(gen),
-                        0.3 * ce_test::uniform_symmetric(gen));
-  const CE::internal::Point_set_search search(points, CGAL::Sequential_tag());
-  CE::internal::Point_set_search::Found found;
-  for (std::size_t j = 0; j < points.size(); j += 7)
-    for (std::size_t k : {16u, 64u}) {
-      search.nearest(CE::internal::Point_set_search::Index(j), k, found);
-      std::vector<std::pair<double, std::size_t>> brute;
-      for (std::size_t m = 0; m < points.size(); ++m)
-        if (m != j)
-          brute.emplace_back((search.point(m) - search.point(j)).squaredNorm(), m);
-      std::partial_sort(brute.begin(), brute.begin() + k, brute.end());
-      ASSERT_EQ(found.size(), k);
-      for (std::size_t m = 0; m < k; ++m)
-        ASSERT_EQ(found[m].second, brute[m].second) << "point " << j << ", neighbor " << m;
-      search.within(CE::internal::Point_set_search::Index(j), std::sqrt(brute[k - 1].first) * (1 + 1e-12), found);
-      std::sort(found.begin(), found.end());
-      ASSERT_EQ(found.size(), k) << j;
-      for (std::size_t m = 0; m < k; ++m)
-        ASSERT_EQ(found[m].second, brute[m].second) << "point " << j << ", neighbor " << m;
-    }
-}
-
 // In parallel, the same values bit for bit as in sequence.
 TEST(PointSetCurvatures, ParallelEqualsSequential)
 {

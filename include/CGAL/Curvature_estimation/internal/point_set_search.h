@@ -1,23 +1,23 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The neighbors of the points of a point set: CGAL's kd-tree over their indices,
-// built once and queried from several threads: the k nearest, exactly, and the
-// points within a distance.
+// The neighbors of the points of a point set: a bounding-box hierarchy over the
+// points in Morton order, built once and queried from several threads: the k
+// nearest, exactly, and the points within a distance, both in a canonical order.
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_POINT_SET_SEARCH_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_POINT_SET_SEARCH_H
 
-#include <CGAL/Euclidean_distance.h>
-#include <CGAL/Fuzzy_sphere.h>
-#include <CGAL/Kd_tree.h>
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Simple_cartesian.h>
-
-#include <boost/function_output_iterator.hpp>
+#include <CGAL/tags.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_sort.h>
+#endif
+
 #include <algorithm>
 #include <cstdint>
+#include <limits>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -26,31 +26,31 @@ namespace Curvature_estimation {
 namespace internal {
 
 // The points are stored once, in the order of a Morton curve over their bounding
-// box (queries in that order find their neighbors in the cache): an index here is
-// a position in that order, original(i) the point's in the input. The tree holds
-// the finite points only, so that a non-finite point is never anyone's neighbor.
+// box: an index here is a position in that order, original(i) the point's in the
+// input. Each node of the hierarchy is a range of that order, a cell of the curve,
+// with the box of its points; the queries read the points in place (no allocation
+// but the caller's `Found`, reused). The hierarchy holds the finite points only,
+// so that a non-finite point is never anyone's neighbor.
 class Point_set_search
 {
 public:
   using Index = std::uint32_t;
-  using Kernel = CGAL::Simple_cartesian<double>;
   using Found = std::vector<std::pair<double, Index>>; // squared distance, index
 
   template <typename ConcurrencyTag>
   Point_set_search(const std::vector<Eigen::Vector3d>& points, ConcurrencyTag)
-      : order_(spatial_order(points))
-      , tree_(Splitter(), Traits{&points_})
-      , distance_(Traits{&points_})
   {
+    const std::vector<Key> keys = spatial_order<ConcurrencyTag>(points);
+    order_.reserve(points.size());
     points_.reserve(points.size());
-    for (Index i : order_)
-      points_.push_back(points[i]);
-    for (std::size_t i = 0; i < points_.size(); ++i)
-      if (points_[i].allFinite()) {
-        tree_.insert(Index(i));
-        ++finite_;
-      }
-    tree_.template build<ConcurrencyTag>();
+    for (const Key& key : keys) {
+      order_.push_back(key.second);
+      points_.push_back(points[key.second]);
+    }
+    while (finite_ < points_.size() && points_[finite_].allFinite()) // the non-finite points are last
+      ++finite_;
+    if (finite_ > 0)
+      build(keys, 0, Index(finite_));
   }
 
   Point_set_search(const Point_set_search&) = delete;
@@ -62,67 +62,150 @@ public:
   const std::vector<Eigen::Vector3d>& points() const { return points_; }
   std::size_t original(std::size_t i) const { return order_[i]; }
 
-  // The `count` points nearest to point i, i excluded, nearest first and ties by
-  // index; fewer where the set has fewer.
+  // The `count` points nearest to point i, i excluded, in the order `before`;
+  // fewer where the set has fewer, none where point i is not finite.
   void nearest(Index i, std::size_t count, Found& found) const
   {
     found.clear();
-    const Search search(tree_, i, static_cast<unsigned>(count + 1), 0, true, distance_);
-    for (const auto& neighbor : search)
-      if (neighbor.first != i)
-        found.emplace_back(neighbor.second, neighbor.first);
-    if (found.size() > count)
-      found.resize(count);
-    std::sort(found.begin(), found.end());
+    if (count == 0 || i >= finite_)
+      return;
+    // The nearest child first, so that the bound (the count-th nearest yet) shrinks
+    // early; found kept sorted by insertion (count is small).
+    double bound = infinity;
+    visit(i, bound, [&](double d, Index j) {
+      const std::pair<double, Index> candidate(d, j);
+      if (found.size() < count)
+        found.push_back(candidate);
+      else if (before(candidate, found.back()))
+        found.back() = candidate;
+      else
+        return;
+      std::size_t m = found.size() - 1;
+      for (; m > 0 && before(candidate, found[m - 1]); --m)
+        found[m] = found[m - 1];
+      found[m] = candidate;
+      if (found.size() == count)
+        bound = found.back().first;
+    });
   }
 
-  // The points within `radius` of point i, i excluded, in no order.
+  // The points within `radius` of point i, i excluded, in the order `before`.
   void within(Index i, double radius, Found& found) const
   {
     found.clear();
-    tree_.search(boost::make_function_output_iterator(Add{&points_, i, &found}), Sphere(i, radius, 0, tree_.traits()));
+    if (i >= finite_)
+      return;
+    double bound = radius * radius;
+    visit(i, bound, [&](double d, Index j) { found.emplace_back(d, j); });
+    std::sort(found.begin(), found.end(), [this](const auto& a, const auto& b) { return before(a, b); });
+  }
+
+  // Nearer first; at equal distances by position (x, then y, then z), then by index:
+  // an order that the other points of the set do not change (a tile of the set finds
+  // its points' neighbors in the order the whole set does).
+  bool before(const std::pair<double, Index>& a, const std::pair<double, Index>& b) const
+  {
+    if (a.first != b.first)
+      return a.first < b.first;
+    const Eigen::Vector3d &p = points_[a.second], &q = points_[b.second];
+    if (p != q)
+      return std::lexicographical_compare(p.data(), p.data() + 3, q.data(), q.data() + 3);
+    return a.second < b.second;
   }
 
 private:
-  // CGAL's search traits over the indices of points_, whose coordinates are read in
-  // place: Search_traits_adapter over a map that returns points by value copies each
-  // point it reads to the heap (two allocations a point visited, most of a query's time).
-  struct Traits
+  static constexpr Index leaf_size = 16;
+  static constexpr double infinity = std::numeric_limits<double>::infinity();
+
+  struct Node
   {
-    using Dimension = CGAL::Dimension_tag<3>;
-    using FT = double;
-    using Point_d = Index;
-    using Cartesian_const_iterator_d = const double*;
-    using Iso_box_d = Kernel::Iso_cuboid_3; // for the concept: no box queries here
-    struct Construct_cartesian_const_iterator_d
+    Eigen::Vector3d min, max;
+    Index begin, end; // the points of the node
+    Index second;     // the second child (the first follows the node); 0 for a leaf
+  };
+
+  // One formula for the points and the boxes, so that a box is never farther than its points.
+  static double squared_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& q)
+  {
+    const double x = p[0] - q[0], y = p[1] - q[1], z = p[2] - q[2];
+    return x * x + y * y + z * z;
+  }
+  static double box_distance(const Node& node, const Eigen::Vector3d& q)
+  {
+    return squared_distance(q, q.cwiseMax(node.min).cwiseMin(node.max));
+  }
+
+  // Calls offer(squared distance, j) for the points j other than i within `bound`
+  // of point i (which offer may lower), the nodes' nearer child first.
+  template <typename Offer>
+  void visit(Index i, const double& bound, const Offer& offer) const
+  {
+    const Eigen::Vector3d& q = points_[i];
+    struct Pending
     {
-      using result_type = const double*;
-      const std::vector<Eigen::Vector3d>* points;
-      const double* operator()(Index i) const { return (*points)[i].data(); }
-      const double* operator()(Index i, int) const { return (*points)[i].data() + 3; }
+      double distance;
+      Index node;
     };
-    const std::vector<Eigen::Vector3d>* points = nullptr;
-    Construct_cartesian_const_iterator_d construct_cartesian_const_iterator_d_object() const { return {points}; }
-  };
-  using Splitter = CGAL::Sliding_midpoint<Traits>;
-  using Distance = CGAL::Euclidean_distance<Traits>;
-  using Tree = CGAL::Kd_tree<Traits, Splitter, CGAL::Tag_true, CGAL::Tag_true>;
-  using Search = CGAL::Orthogonal_k_neighbor_search<Traits, Distance, Splitter, Tree>;
-  using Sphere = CGAL::Fuzzy_sphere<Traits>;
-
-  struct Add // assignable, as an output iterator's function must be
-  {
-    const std::vector<Eigen::Vector3d>* points;
-    Index center;
-    Found* found;
-    void operator()(Index j) const
-    {
-      if (j != center)
-        found->emplace_back(((*points)[j] - (*points)[center]).squaredNorm(), j);
+    Pending stack[128]; // the depth is at most 63 bits of code and 32 halvings
+    int size = 0;
+    stack[size++] = {0., 0};
+    while (size > 0) {
+      const Pending pending = stack[--size];
+      if (pending.distance > bound)
+        continue;
+      const Node& node = nodes_[pending.node];
+      if (node.second == 0) {
+        for (Index j = node.begin; j < node.end; ++j) {
+          const double d = squared_distance(points_[j], q);
+          if (d <= bound && j != i)
+            offer(d, j);
+        }
+        continue;
+      }
+      const Pending first{box_distance(nodes_[pending.node + 1], q), pending.node + 1},
+        second{box_distance(nodes_[node.second], q), node.second};
+      stack[size++] = first.distance <= second.distance ? second : first;
+      stack[size++] = first.distance <= second.distance ? first : second;
     }
-  };
+  }
 
-  static std::vector<Index> spatial_order(const std::vector<Eigen::Vector3d>& points)
+  using Key = std::pair<std::uint64_t, Index>; // Morton code, index in the input
+
+  // The node of points [begin, end), split where their Morton codes' highest differing
+  // bit changes (at the middle where the codes are equal), so that its children's
+  // boxes are cells of the curve and seldom overlap.
+  Index build(const std::vector<Key>& keys, Index begin, Index end)
+  {
+    const Index n = Index(nodes_.size());
+    nodes_.push_back({points_[begin], points_[begin], begin, end, 0});
+    if (end - begin <= leaf_size) {
+      for (Index j = begin + 1; j < end; ++j) {
+        nodes_[n].min = nodes_[n].min.cwiseMin(points_[j]);
+        nodes_[n].max = nodes_[n].max.cwiseMax(points_[j]);
+      }
+      return n;
+    }
+    const std::uint64_t first = keys[begin].first, last = keys[end - 1].first;
+    Index middle = begin + (end - begin) / 2;
+    if (first != last) {
+      std::uint64_t bit = std::uint64_t(1) << 63;
+      while ((first & bit) == (last & bit))
+        bit >>= 1;
+      middle = Index(std::partition_point(keys.begin() + begin, keys.begin() + end,
+                                          [bit](const Key& key) { return (key.first & bit) == 0; }) -
+                     keys.begin());
+    }
+    build(keys, begin, middle);
+    const Index second = build(keys, middle, end);
+    nodes_[n].second = second;
+    nodes_[n].min = nodes_[n + 1].min.cwiseMin(nodes_[second].min);
+    nodes_[n].max = nodes_[n + 1].max.cwiseMax(nodes_[second].max);
+    return n;
+  }
+
+  // The points' Morton codes over their bounding box, sorted.
+  template <typename ConcurrencyTag>
+  static std::vector<Key> spatial_order(const std::vector<Eigen::Vector3d>& points)
   {
     Eigen::AlignedBox3d box;
     for (const Eigen::Vector3d& p : points)
@@ -130,7 +213,7 @@ private:
         box.extend(p);
     const Eigen::Vector3d scale =
       (double(1 << 21) - 1) * (box.sizes().array() > 0).select(box.sizes().cwiseInverse(), 0);
-    std::vector<std::pair<std::uint64_t, Index>> keys(points.size());
+    std::vector<Key> keys(points.size());
     for (std::size_t i = 0; i < points.size(); ++i) {
       std::uint64_t key = ~std::uint64_t(0); // the non-finite points last
       if (points[i].allFinite()) {
@@ -145,17 +228,18 @@ private:
       }
       keys[i] = {key, Index(i)};
     }
-    std::sort(keys.begin(), keys.end());
-    std::vector<Index> order(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i)
-      order[i] = keys[i].second;
-    return order;
+#ifdef CGAL_LINKED_WITH_TBB
+    if (std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value)
+      tbb::parallel_sort(keys.begin(), keys.end());
+    else
+#endif
+      std::sort(keys.begin(), keys.end());
+    return keys;
   }
 
   std::vector<Index> order_;
   std::vector<Eigen::Vector3d> points_;
-  Tree tree_;
-  Distance distance_;
+  std::vector<Node> nodes_;
   std::size_t finite_ = 0;
 };
 
