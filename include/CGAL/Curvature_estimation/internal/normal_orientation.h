@@ -12,7 +12,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <queue>
 #include <tuple>
 #include <vector>
 
@@ -39,6 +38,89 @@ inline float normal_agreement(const Eigen::Vector3d& p, const Eigen::Vector3f& n
   return std::abs(n_p.dot(n_q)) * (1 - leaving);
 }
 
+// Prim's front: the best edge found so far to each point not yet reached, in a
+// heap indexed by point. It pops edges in the order of a queue of every edge
+// listed, by largest (agreement, point, from), with one entry per point.
+class Prim_front
+{
+public:
+  struct Edge
+  {
+    float agreement;
+    std::uint32_t point, from;
+    bool operator<(const Edge& e) const
+    {
+      return std::tie(agreement, point, from) < std::tie(e.agreement, e.point, e.from);
+    }
+  };
+
+  explicit Prim_front(std::size_t points)
+      : position_(points, absent)
+  {}
+
+  bool empty() const { return heap_.empty(); }
+
+  // Keeps the edge if it is the best yet to its point.
+  void offer(const Edge& edge)
+  {
+    std::uint32_t at = position_[edge.point];
+    if (at == absent) {
+      at = std::uint32_t(heap_.size());
+      heap_.push_back(edge);
+    } else if (heap_[at] < edge)
+      heap_[at] = edge;
+    else
+      return;
+    up(at);
+  }
+
+  Edge pop()
+  {
+    const Edge top = heap_.front();
+    position_[top.point] = absent;
+    const Edge last = heap_.back();
+    heap_.pop_back();
+    if (!heap_.empty()) {
+      place(0, last);
+      down(0);
+    }
+    return top;
+  }
+
+private:
+  static constexpr std::uint32_t absent = ~std::uint32_t(0);
+
+  void place(std::uint32_t at, const Edge& edge)
+  {
+    heap_[at] = edge;
+    position_[edge.point] = at;
+  }
+  void up(std::uint32_t at)
+  {
+    const Edge edge = heap_[at];
+    for (; at > 0 && heap_[(at - 1) / 2] < edge; at = (at - 1) / 2)
+      place(at, heap_[(at - 1) / 2]);
+    place(at, edge);
+  }
+  void down(std::uint32_t at)
+  {
+    const Edge edge = heap_[at];
+    const std::size_t size = heap_.size();
+    for (std::size_t child = 2 * std::size_t(at) + 1; child < size; child = 2 * std::size_t(at) + 1) {
+      if (child + 1 < size && heap_[child] < heap_[child + 1])
+        ++child;
+      if (!(edge < heap_[child]))
+        break;
+      place(at, heap_[child]);
+      at = std::uint32_t(child);
+    }
+    place(at, edge);
+  }
+
+  std::vector<Edge> heap_;
+  std::vector<std::uint32_t> position_; // in heap_, of the points listed and not reached
+};
+
 // Orients `normals` (unit, or zero where a point has none) over the graph in
 // which `neighbors(i, visit)` calls visit(j) for the neighbors j of i.
 template <typename Neighbors>
@@ -54,26 +136,22 @@ Normal_orientation orient_normals(const std::vector<Eigen::Vector3d>& points, st
   std::vector<float>& confidence = result.confidence;
 
   // Prim from each point not yet reached, over the edges listed from reached points.
-  using Edge = std::tuple<float, std::uint32_t, std::uint32_t>; // agreement, point, from
-  std::priority_queue<Edge> front;
+  Prim_front front(n);
   std::uint32_t parts = 0;
   for (std::size_t seed = 0; seed < n; ++seed) {
     if (part[seed] != Normal_orientation::no_part || !has_normal(seed))
       continue;
-    front.emplace(1.f, std::uint32_t(seed), std::uint32_t(seed));
+    front.offer({1.f, std::uint32_t(seed), std::uint32_t(seed)});
     while (!front.empty()) {
-      const auto [agreement, i, from] = front.top();
-      front.pop();
-      if (part[i] != Normal_orientation::no_part)
-        continue;
+      const Prim_front::Edge edge = front.pop();
+      const std::uint32_t i = edge.point, from = edge.from;
       if (normals[i].dot(normals[from]) < 0)
         normals[i] = -normals[i];
       part[i] = parts;
-      confidence[i] = (std::min)(agreement, i == from ? 1.f : confidence[from]);
-      const auto reached = i; // C++17 lambdas cannot capture structured bindings
-      neighbors(reached, [&](std::uint32_t j) {
+      confidence[i] = (std::min)(edge.agreement, i == from ? 1.f : confidence[from]);
+      neighbors(i, [&](std::uint32_t j) {
         if (part[j] == Normal_orientation::no_part && has_normal(j))
-          front.emplace(normal_agreement(points[reached], normals[reached], points[j], normals[j]), j, reached);
+          front.offer({normal_agreement(points[i], normals[i], points[j], normals[j]), j, i});
       });
     }
     ++parts;
@@ -81,7 +159,8 @@ Normal_orientation orient_normals(const std::vector<Eigen::Vector3d>& points, st
 
   // Parts joined by edges listed from their far side only: by decreasing agreement,
   // a union-find that keeps each part's flip relative to its root.
-  std::vector<Edge> joins; // agreement, point, neighbor
+  using Edge = std::tuple<float, std::uint32_t, std::uint32_t>; // agreement, point, neighbor
+  std::vector<Edge> joins;
   for (std::uint32_t i = 0; i < n; ++i)
     if (part[i] != Normal_orientation::no_part)
       neighbors(i, [&](std::uint32_t j) {
