@@ -126,25 +126,19 @@ Normal_orientation oriented_rings(const Point_set_search& search, std::size_t ne
     Point_set_neighborhood neighborhood;
     Point_set_rings* rings;
     std::vector<Eigen::Vector3d> offsets;
-    Point_set_search::Found nearest;
     char load(std::size_t) const { return 0; }
     char compute(std::size_t v, char)
     {
       if (!neighborhood.point(v).allFinite())
         return 0;
       neighborhood.start(v);
-      const auto& gathered = neighborhood.vertices();
+      const auto& gathered = neighborhood.vertices(); // v, then its neighbors nearest first
       offsets.clear();
-      nearest.clear();
-      for (std::size_t i = 0; i < gathered.size(); ++i) {
+      for (std::size_t i = 0; i < gathered.size(); ++i)
         offsets.push_back(neighborhood.point(gathered[i]) - neighborhood.point(v));
-        if (i > 0)
-          nearest.emplace_back(offsets.back().squaredNorm(), Point_set_search::Index(gathered[i]));
-      }
-      const std::size_t row = (std::min)(rings->stride, nearest.size());
-      std::partial_sort(nearest.begin(), nearest.begin() + row, nearest.end()); // a ball is in no order
+      const std::size_t row = (std::min)(rings->stride, gathered.size() - 1);
       for (std::size_t i = 0; i < row; ++i)
-        rings->neighbors[v * rings->stride + i] = nearest[i].second;
+        rings->neighbors[v * rings->stride + i] = Point_set_search::Index(gathered[i + 1]);
       const Eigen::Vector3d normal = Point_set_neighborhood::plane_normal(offsets.data(), offsets.size());
       if (offsets.size() >= 3 && normal.allFinite())
         rings->normals[v] = normal.cast<float>();
@@ -153,8 +147,8 @@ Normal_orientation oriented_rings(const Point_set_search& search, std::size_t ne
   };
   const auto indices =
     boost::make_iterator_range(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(n));
-  for_each_vertex<ConcurrencyTag, true>(
-    indices, Worker{Point_set_neighborhood(search, neighbors, radius), &rings, {}, {}}, [](std::size_t, char) {});
+  for_each_vertex<ConcurrencyTag, true>(indices, Worker{Point_set_neighborhood(search, neighbors, radius), &rings, {}},
+                                        [](std::size_t, char) {});
   return orient_normals(search.points(), rings.normals, [&](std::size_t i, const auto& visit) {
     for (std::size_t k = 0; k < stride; ++k) {
       const Point_set_search::Index j = rings.neighbors[i * stride + k];

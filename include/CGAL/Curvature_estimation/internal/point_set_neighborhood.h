@@ -123,7 +123,6 @@ public:
     if (radius > ball_radius_) {
       const double reach = (std::max)(radius, reach_);
       search_->within(Index(vertices_[0]), reach, found_);
-      std::sort(found_.begin(), found_.end());
       const double inner = ball_distances_.empty() ? -1 : ball_radius_ * ball_radius_;
       for (const auto& f : found_)
         if (f.first > inner) {
