@@ -17,7 +17,11 @@
 //    Monge_via_jet_fitting of degree 2 and Monge degree 2 at every point (the package's
 //    jet wrapper's defaults), the same outputs; its H takes the side of the exact normal
 //    (the jet orients nothing) before its RMS is taken;
-//  - cgal_search: that tree and those queries alone.
+//  - cgal_search: that tree and those queries alone;
+//  - nanoflann_search (where nanoflann's header is installed): nanoflann's kd-tree over
+//    the points in the order of our search (their Morton order, not timed: in the input's
+//    random order its queries take about 4 times as long) and the k + 1 nearest of every
+//    point: the fastest search measured here, a floor for any search.
 // Counters: time_per_point (s), peak_heap_bytes_per_point (operator new's bytes held at
 // once during the call, beyond the inputs and outputs allocated before it; Eigen's own
 // mallocs, of the jet's per-point matrices, are not counted), allocations_per_point,
@@ -40,6 +44,11 @@
 #include <CGAL/version.h>
 
 #include <benchmark/benchmark.h>
+
+#if __has_include(<nanoflann.hpp>)
+#include <nanoflann.hpp>
+#define CE_BENCH_NANOFLANN 1
+#endif
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
@@ -161,6 +170,54 @@ void our_search(std::size_t k, std::size_t& found_total)
   found_total = total;
 }
 
+#ifdef CE_BENCH_NANOFLANN
+// The points as nanoflann's adaptor reads them.
+struct Nanoflann_points
+{
+  std::vector<Eigen::Vector3d> points;
+  std::size_t kdtree_get_point_count() const { return points.size(); }
+  double kdtree_get_pt(std::size_t i, std::size_t c) const { return points[i][int(c)]; }
+  template <typename Box>
+  bool kdtree_get_bbox(Box&) const
+  {
+    return false;
+  }
+};
+
+// The sample in the order of our search, made once before the first timed run.
+const Nanoflann_points& morton_ordered()
+{
+  static const Nanoflann_points ordered = [] {
+    std::vector<Eigen::Vector3d> coordinates;
+    for (const Point& p : sample().points)
+      coordinates.emplace_back(p.x(), p.y(), p.z());
+    const CE::internal::Point_set_search search(coordinates, CGAL::Sequential_tag());
+    return Nanoflann_points{search.points()};
+  }();
+  return ordered;
+}
+
+template <typename ConcurrencyTag>
+void nanoflann_search(std::size_t k, std::size_t& found_total)
+{
+  using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Nanoflann_points>,
+                                                   Nanoflann_points, 3, unsigned>;
+  const Nanoflann_points& ordered = morton_ordered();
+  Tree tree(3, ordered, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  tree.buildIndex();
+  std::atomic<std::size_t> total{0};
+  for_points<ConcurrencyTag>(ordered.points.size(), [&](std::size_t begin, std::size_t end) {
+    std::vector<unsigned> indices(k + 1);
+    std::vector<double> distances(k + 1);
+    std::size_t count = 0;
+    for (std::size_t i = begin; i < end; ++i)
+      count += tree.knnSearch(ordered.points[i].data(), k + 1, indices.data(), distances.data()) - 1;
+    total += count;
+  });
+  found_total = total;
+}
+#endif
+
 using Traits = CGAL::Search_traits_3<Kernel>;
 using Neighbor_search = CGAL::Orthogonal_k_neighbor_search<Traits>;
 using Tree = Neighbor_search::Tree;
@@ -208,7 +265,8 @@ enum class Case
   ours_given_normals,
   search,
   cgal_jet,
-  cgal_search
+  cgal_search,
+  nanoflann_search
 };
 
 const char* name(Case c)
@@ -224,6 +282,8 @@ const char* name(Case c)
       return "cgal_jet";
     case Case::cgal_search:
       return "cgal_search";
+    case Case::nanoflann_search:
+      return "nanoflann_search";
   }
   return "";
 }
@@ -243,6 +303,11 @@ void run(Case c, std::size_t k, const std::vector<std::size_t>& indices, Outputs
     case Case::cgal_search:
       cgal_jet<ConcurrencyTag>(k, c == Case::cgal_jet, o, found);
       break;
+    case Case::nanoflann_search:
+#ifdef CE_BENCH_NANOFLANN
+      nanoflann_search<ConcurrencyTag>(k, found);
+#endif
+      break;
   }
 }
 
@@ -256,6 +321,10 @@ void time_case(benchmark::State& state, Case c, std::size_t k, bool parallel)
   std::size_t found = 0;
   const unsigned long long allocations_before = ce_bench::heap_allocations();
   long long peak_heap = 0;
+#ifdef CE_BENCH_NANOFLANN
+  if (c == Case::nanoflann_search)
+    morton_ordered();
+#endif
   for (auto _ : state) {
     ce_bench::reset_peak_heap();
 #ifdef CGAL_LINKED_WITH_TBB
@@ -277,7 +346,7 @@ void time_case(benchmark::State& state, Case c, std::size_t k, bool parallel)
     double(ce_bench::heap_allocations() - allocations_before) / (points * double(state.iterations()));
   state.counters["time_per_point"] =
     benchmark::Counter(points, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
-  if (c == Case::search || c == Case::cgal_search) {
+  if (c == Case::search || c == Case::cgal_search || c == Case::nanoflann_search) {
     state.counters["neighbors_per_point"] = double(found) / points;
     return;
   }
@@ -299,8 +368,13 @@ void time_case(benchmark::State& state, Case c, std::size_t k, bool parallel)
 void register_all(int repetitions)
 {
   for (std::size_t k : {16, 32})
-    for (Case c : {Case::ours, Case::ours_given_normals, Case::search, Case::cgal_jet, Case::cgal_search})
+    for (Case c : {Case::ours, Case::ours_given_normals, Case::search, Case::cgal_jet, Case::cgal_search,
+                   Case::nanoflann_search})
       for (bool parallel : {false, true}) {
+#ifndef CE_BENCH_NANOFLANN
+        if (c == Case::nanoflann_search)
+          continue;
+#endif
 #ifndef CGAL_LINKED_WITH_TBB
         if (parallel)
           continue;

@@ -41,6 +41,8 @@ if [ "${1:-}" = "--report" ]; then
   PACKAGES+=(time)
   # Callgrind: the default's instructions per vertex (benchmark/instructions.sh).
   PACKAGES+=(valgrind)
+  # nanoflann's kd-tree, the point sets' search peer in benchmark/POINT_SETS.md (report only).
+  PACKAGES+=(libnanoflann-dev)
 fi
 
 is_installed() {
