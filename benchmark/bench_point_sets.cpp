@@ -146,15 +146,21 @@ void ours(const std::vector<std::size_t>& indices, std::size_t k, bool given_nor
     CE::point_set_curvatures<ConcurrencyTag>(indices, np);
 }
 
+// The sample's points as the search takes them.
+std::vector<Eigen::Vector3d> sample_coordinates()
+{
+  std::vector<Eigen::Vector3d> coordinates;
+  coordinates.reserve(sample().points.size());
+  for (const Point& p : sample().points)
+    coordinates.emplace_back(p.x(), p.y(), p.z());
+  return coordinates;
+}
+
 template <typename ConcurrencyTag>
 void our_search(std::size_t k, std::size_t& found_total)
 {
   using Search = CE::internal::Point_set_search;
-  const Sample& s = sample();
-  std::vector<Eigen::Vector3d> coordinates;
-  coordinates.reserve(s.points.size());
-  for (const Point& p : s.points)
-    coordinates.emplace_back(p.x(), p.y(), p.z());
+  std::vector<Eigen::Vector3d> coordinates = sample_coordinates();
   const Search search(coordinates, ConcurrencyTag());
   std::vector<Eigen::Vector3d>().swap(coordinates); // as point_set_curvatures does
   std::atomic<std::size_t> total{0};
@@ -188,10 +194,7 @@ struct Nanoflann_points
 const Nanoflann_points& morton_ordered()
 {
   static const Nanoflann_points ordered = [] {
-    std::vector<Eigen::Vector3d> coordinates;
-    for (const Point& p : sample().points)
-      coordinates.emplace_back(p.x(), p.y(), p.z());
-    const CE::internal::Point_set_search search(coordinates, CGAL::Sequential_tag());
+    const CE::internal::Point_set_search search(sample_coordinates(), CGAL::Sequential_tag());
     return Nanoflann_points{search.points()};
   }();
   return ordered;
