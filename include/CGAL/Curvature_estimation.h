@@ -12,6 +12,7 @@
 #include <CGAL/Curvature_estimation/hypersurface_paraboloid_fitting.h>
 #include <CGAL/Curvature_estimation/jet_fitting.h>
 #include <CGAL/Curvature_estimation/mean_edge_length.h>
+#include <CGAL/Curvature_estimation/neighborhood_reach.h>
 #include <CGAL/Curvature_estimation/paraboloid_fitting.h>
 #include <CGAL/Curvature_estimation/parameters.h>
 #include <CGAL/Curvature_estimation/point_set_curvatures.h>

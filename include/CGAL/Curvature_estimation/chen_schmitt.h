@@ -37,6 +37,9 @@ bool chen_schmitt_uniform(const NamedParameters& np)
   }
 }
 
+// The rings of the samples: the 1-ring's edges for the paper's fit, else the 2-ring's vertices.
+constexpr int chen_schmitt_rings(bool uniform) { return uniform ? 1 : 2; }
+
 // Euler's formula fitted to the samples by least squares: unweighted (`uniform`)
 // as Chen and Schmitt, else with weights |q_i - p|^2. A sample's error, that of
 // the normal and the cubic remainder, is divided by |q_i - p|: the weights make
@@ -91,7 +94,7 @@ void chen_schmitt_curvatures(const FaceGraph& g, const NamedParameters& np = par
 {
   const bool uniform = internal::chen_schmitt_uniform(np);
   internal::normal_curvature_sample_curvatures<ConcurrencyTag>(
-    g, np, "chen_schmitt_curvatures", uniform ? 1 : 2,
+    g, np, "chen_schmitt_curvatures", internal::chen_schmitt_rings(uniform),
     [uniform](const std::vector<internal::Normal_curvature_sample>& samples, Eigen::Matrix2d& shape) {
       return internal::chen_schmitt_shape_matrix(samples, uniform, shape);
     });

@@ -27,6 +27,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #ifndef CGAL_EIGEN3_ENABLED
@@ -180,6 +181,19 @@ private:
   std::optional<Surface_scale_selector<FaceGraph, VertexPointMap>> selector_; // under scale selection
 };
 
+// The starting and the widest rings of `np` (max_neighborhood_rings by default 3 rings
+// beyond the first, as CGAL's jet fitting widens). Throws std::invalid_argument where
+// they are not 1 <= neighborhood_rings <= max_neighborhood_rings.
+template <typename NamedParameters>
+std::pair<int, int> jet_rings(const NamedParameters& np, const char* caller)
+{
+  const int rings = parameter_or(np, internal_np::neighborhood_rings, 1);
+  const int max_rings = parameter_or(np, internal_np::max_neighborhood_rings, rings + 3);
+  if (rings < 1 || max_rings < rings)
+    throw std::invalid_argument(std::string(caller) + ": needs 1 <= neighborhood_rings <= max_neighborhood_rings");
+  return {rings, max_rings};
+}
+
 } // namespace internal
 
 /// \ingroup PkgCurvatureEstimationRef
@@ -233,8 +247,8 @@ void jet_fitting_curvatures(const FaceGraph& g, const NamedParameters& np = para
 {
   const int jet_degree = internal::parameter_or(np, internal_np::jet_degree, 2);
   const int monge_degree = internal::parameter_or(np, internal_np::monge_degree, 2);
-  const int rings = internal::parameter_or(np, internal_np::neighborhood_rings, 1);
-  const int max_rings = internal::parameter_or(np, internal_np::max_neighborhood_rings, rings + 3);
+  const std::pair<int, int> widening = internal::jet_rings(np, "jet_fitting_curvatures");
+  const int rings = widening.first, max_rings = widening.second; // captured below: no structured binding
   const double max_condition = internal::parameter_or(np, internal_np::max_condition_number, 1e3);
   const double ball_radius = internal::ball_radius_or_zero(np, "jet_fitting_curvatures");
   const internal::Radius_range radius_range = internal::ball_radius_range_or_none(np, "jet_fitting_curvatures");
@@ -242,8 +256,6 @@ void jet_fitting_curvatures(const FaceGraph& g, const NamedParameters& np = para
   const std::string where = "jet_fitting_curvatures: ";
   if (jet_degree < 1 || jet_degree > 4 || monge_degree < 2 || monge_degree > jet_degree)
     throw std::invalid_argument(where + "needs 2 <= monge_degree <= jet_degree <= 4");
-  if (rings < 1 || max_rings < rings)
-    throw std::invalid_argument(where + "needs 1 <= neighborhood_rings <= max_neighborhood_rings");
   if (!(max_condition > 1))
     throw std::invalid_argument(where + "max_condition_number must be greater than 1");
 

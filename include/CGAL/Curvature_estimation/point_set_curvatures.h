@@ -38,6 +38,36 @@ template <typename P, typename V>
 struct Is_point_set_3<CGAL::Point_set_3<P, V>> : std::true_type
 {};
 
+// The fit settings and the neighborhood of `np`: `neighbors` nearest (0 over a radius, the
+// settings' ball_radius). Throws std::invalid_argument where one is out of its range.
+struct Point_set_parameters
+{
+  Fit_parameters fit;
+  std::size_t neighbors;
+};
+
+template <typename NamedParameters>
+Point_set_parameters point_set_parameters(const NamedParameters& np, const char* caller)
+{
+  Fit_parameters fit = curvature_fit_parameters(np, caller, 4, Neighborhoods::rings_or_selected);
+  Fit_settings& settings = fit.settings;
+  settings.ring_intercept = true;
+  settings.ball_radius = static_cast<double>(parameter_or(np, ::CGAL::internal_np::neighbor_radius, 0.0));
+  const bool by_radius = has_parameter<NamedParameters, ::CGAL::internal_np::neighbor_radius_t>();
+  const std::size_t k =
+    parameter_or(np, internal_np::number_of_neighbors, default_point_set_neighbors(settings.degree));
+  const std::string where = std::string(caller) + ": ";
+  if (by_radius && has_parameter<NamedParameters, internal_np::number_of_neighbors_t>())
+    throw std::invalid_argument(where + "give number_of_neighbors or neighbor_radius, not both");
+  if (by_radius && settings.selects_radius())
+    throw std::invalid_argument(where + "neighbor_radius and ball_radius_range exclude each other");
+  if (by_radius && !(settings.ball_radius > 0 && std::isfinite(settings.ball_radius)))
+    throw std::invalid_argument(where + "neighbor_radius must be positive and finite");
+  if (!by_radius && k < 3)
+    throw std::invalid_argument(where + "number_of_neighbors must be at least 3");
+  return {fit, by_radius ? 0 : k};
+}
+
 } // namespace internal
 
 /// \ingroup PkgCurvatureEstimationRef
@@ -171,22 +201,9 @@ void point_set_curvatures(PointRange& points, const NamedParameters& np = parame
     std::is_base_of<std::random_access_iterator_tag, typename std::iterator_traits<Iterator>::iterator_category>::value;
   const char* const caller = "point_set_curvatures";
 
-  internal::Fit_parameters fit =
-    internal::curvature_fit_parameters(np, caller, 4, internal::Neighborhoods::rings_or_selected);
-  internal::Fit_settings& settings = fit.settings;
-  settings.ring_intercept = true;
-  settings.ball_radius = static_cast<double>(internal::parameter_or(np, ::CGAL::internal_np::neighbor_radius, 0.0));
-  const bool by_radius = internal::has_parameter<NamedParameters, ::CGAL::internal_np::neighbor_radius_t>();
-  const std::size_t k = internal::parameter_or(np, internal_np::number_of_neighbors,
-                                               internal::default_point_set_neighbors(settings.degree));
-  if (by_radius && internal::has_parameter<NamedParameters, internal_np::number_of_neighbors_t>())
-    throw std::invalid_argument(std::string(caller) + ": give number_of_neighbors or neighbor_radius, not both");
-  if (by_radius && settings.selects_radius())
-    throw std::invalid_argument(std::string(caller) + ": neighbor_radius and ball_radius_range exclude each other");
-  if (by_radius && !(settings.ball_radius > 0 && std::isfinite(settings.ball_radius)))
-    throw std::invalid_argument(std::string(caller) + ": neighbor_radius must be positive and finite");
-  if (!by_radius && k < 3)
-    throw std::invalid_argument(std::string(caller) + ": number_of_neighbors must be at least 3");
+  const internal::Point_set_parameters parameters = internal::point_set_parameters(np, caller);
+  const internal::Fit_settings& settings = parameters.fit.settings;
+  const std::size_t neighbors = parameters.neighbors; // 0 over a radius
   const bool use_fallbacks = internal::parameter_or(np, internal_np::use_fallbacks, true);
   const bool unsigned_curvatures = internal::parameter_or(np, internal_np::unsigned_curvatures, false);
 
@@ -214,15 +231,14 @@ void point_set_curvatures(PointRange& points, const NamedParameters& np = parame
   const internal::Point_set_search search(coordinates, ConcurrencyTag());
   std::vector<Eigen::Vector3d>().swap(coordinates);
   const auto key_of = [&](std::size_t i) -> decltype(auto) { return key(search.original(i)); }; // i: the search's
-  const std::size_t neighbors = by_radius ? 0 : k;
 
   const auto run = [&](auto with_normals, const auto& normal_map) {
     constexpr bool given = decltype(with_normals)::value;
     internal::Point_set_rings rings;
     internal::Normal_orientation orientation;
     if (!given && !unsigned_curvatures)
-      orientation =
-        internal::oriented_rings<ConcurrencyTag>(search, neighbors, settings.ball_radius, by_radius ? 16 : k, rings);
+      orientation = internal::oriented_rings<ConcurrencyTag>(search, neighbors, settings.ball_radius,
+                                                             neighbors > 0 ? neighbors : 16, rings);
     const bool oriented = !orientation.part.empty();
     const auto store = [&](std::size_t i, internal::Surface_estimate e) {
       if (unsigned_curvatures && !given && e.max_curvature + e.min_curvature < 0)

@@ -23,6 +23,9 @@ namespace Curvature_estimation {
 
 namespace internal {
 
+// The rings of Taubin's samples: the 1-ring's edges.
+constexpr int taubin_rings = 1;
+
 // Taubin's tensor (Taubin 1995; eq. 17): M = sum_i w_i k_i t_i t_i^T with the
 // weights normalised to sum 1; its eigenvalues m1 >= m2 give k1 = 3 m1 - m2,
 // k2 = 3 m2 - m1 with the same eigenvectors, i.e. the shape matrix 4 M - tr(M) I.
@@ -92,7 +95,7 @@ void taubin_curvatures(const FaceGraph& g, const NamedParameters& np = parameter
     throw std::invalid_argument("taubin_curvatures: neighbor_weighting must be area or centroid");
   const bool area_weights = weighting == Neighbor_weighting::area;
   internal::normal_curvature_sample_curvatures<ConcurrencyTag>(
-    g, np, "taubin_curvatures", 1,
+    g, np, "taubin_curvatures", internal::taubin_rings,
     [area_weights](const std::vector<internal::Normal_curvature_sample>& samples, Eigen::Matrix2d& shape) {
       return internal::taubin_shape_matrix(samples, area_weights, shape);
     });

@@ -59,6 +59,14 @@ public:
   void add(const Fit_attempt& attempt) { attempts_[count_++] = attempt; }
   const Fit_attempt* begin() const { return attempts_; }
   const Fit_attempt* end() const { return attempts_ + count_; }
+  // The most rings an attempt takes (0 for none, and for the ball's).
+  int widest_rings() const
+  {
+    int rings = 0;
+    for (const Fit_attempt& a : *this)
+      rings = (std::max)(rings, a.last_rings);
+    return rings;
+  }
 
 private:
   Fit_attempt attempts_[4];

@@ -204,6 +204,9 @@ enum class Gauss_map_differential_method : unsigned char
   face_area_weighted      // Gauss_map_differential, area weights
 };
 
+// The rings of the least squares of least_squares_2_ring.
+constexpr int gauss_map_rings = 2;
+
 // A shared Vertex_normal_table as the normals of Gauss_map_estimator.
 template <typename FaceGraph>
 struct Shared_vertex_normals
@@ -255,7 +258,8 @@ public:
       rings_.start(v, g);
       if (ball_radius_ > 0)
         return ball_least_squares(tangents, normal);
-      rings_.extend(g);
+      for (int ring = 1; ring < gauss_map_rings; ++ring)
+        rings_.extend(g);
       if (!fit_least_squares(tangents, normal, false))
         return Surface_estimate();
       return shape_estimate_from_matrix(least_squares_.shape_matrix(), tangents, normal, local_.scale(), true);
