@@ -78,52 +78,65 @@ void estimate_with(const Settings& s, int threads, const NamedParameters& base, 
   });
 }
 
-void run_paraboloid(const Mesh& mesh, const Settings& s, const Outputs& o, int threads)
+// Calls the library's estimator E on `mesh` with `np`.
+template <CE::Estimator E, typename Tag, typename NamedParameters>
+void estimate(const Mesh& mesh, const NamedParameters& np)
 {
-  estimate_with<Neighborhood::rings_ball_or_selected, true>(
-    s, threads, outputs_and_normal_method(s, o).fit_degree(s.fit_degree.value_or(default_of(Setting::fit_degree))),
-    [&](auto tag, const auto& np) { CE::paraboloid_fitting_curvatures<decltype(tag)>(mesh, np); });
+  if constexpr (E == CE::Estimator::paraboloid_fitting)
+    CE::paraboloid_fitting_curvatures<Tag>(mesh, np);
+  else if constexpr (E == CE::Estimator::curve_network)
+    CE::curve_network_curvatures<Tag>(mesh, np);
+  else if constexpr (E == CE::Estimator::gauss_map)
+    CE::gauss_map_curvatures<Tag>(mesh, np);
+  else if constexpr (E == CE::Estimator::taubin)
+    CE::taubin_curvatures<Tag>(mesh, np);
+  else if constexpr (E == CE::Estimator::chen_schmitt)
+    CE::chen_schmitt_curvatures<Tag>(mesh, np);
+  else
+    CE::jet_fitting_curvatures<Tag>(mesh, np);
 }
 
-void run_curve_network(const Mesh& mesh, const Settings& s, const Outputs& o, int threads)
+// Calls `call(tag, np)` with the named parameters of estimator E from the settings `s` (see estimate_with).
+template <CE::Estimator E, typename Call>
+void with_parameters(const Settings& s, const Outputs& o, int threads, const Call& call)
 {
-  estimate_with<Neighborhood::none, true>(
-    s, threads,
-    output_parameters(o).extrapolation_order(s.extrapolation_order.value_or(default_of(Setting::extrapolation_order))),
-    [&](auto tag, const auto& np) { CE::curve_network_curvatures<decltype(tag)>(mesh, np); });
+  if constexpr (E == CE::Estimator::paraboloid_fitting) {
+    estimate_with<Neighborhood::rings_ball_or_selected, true>(
+      s, threads, outputs_and_normal_method(s, o).fit_degree(s.fit_degree.value_or(default_of(Setting::fit_degree))),
+      call);
+  } else if constexpr (E == CE::Estimator::curve_network) {
+    estimate_with<Neighborhood::none, true>(s, threads,
+                                            output_parameters(o).extrapolation_order(
+                                              s.extrapolation_order.value_or(default_of(Setting::extrapolation_order))),
+                                            call);
+  } else if constexpr (E == CE::Estimator::gauss_map) {
+    estimate_with<Neighborhood::rings_or_ball, true>(s, threads, outputs_and_normal_method(s, o), call);
+  } else if constexpr (E == CE::Estimator::taubin || E == CE::Estimator::chen_schmitt) {
+    estimate_with<Neighborhood::rings, true>(s, threads, outputs_and_normal_method(s, o), call);
+  } else {
+    // CGAL's jet fitting widens up to 3 rings beyond the first by default.
+    constexpr int jet_extra_rings = 3;
+    estimate_with<Neighborhood::rings_ball_or_selected, false>(
+      s, threads,
+      output_parameters(o)
+        .jet_degree(s.jet_degree.value_or(default_of(Setting::jet_degree)))
+        .monge_degree(s.monge_degree.value_or(default_of(Setting::monge_degree))),
+      call, jet_extra_rings);
+  }
 }
 
-void run_gauss_map(const Mesh& mesh, const Settings& s, const Outputs& o, int threads)
+template <CE::Estimator E>
+void run_method(const Mesh& mesh, const Settings& s, const Outputs& o, int threads)
 {
-  estimate_with<Neighborhood::rings_or_ball, true>(
-    s, threads, outputs_and_normal_method(s, o),
-    [&](auto tag, const auto& np) { CE::gauss_map_curvatures<decltype(tag)>(mesh, np); });
+  with_parameters<E>(s, o, threads, [&](auto tag, const auto& np) { estimate<E, decltype(tag)>(mesh, np); });
 }
 
-void run_taubin(const Mesh& mesh, const Settings& s, const Outputs& o, int threads)
+template <CE::Estimator E>
+CE::Neighborhood_reach reach_of_method(const Settings& s)
 {
-  estimate_with<Neighborhood::rings, true>(s, threads, outputs_and_normal_method(s, o), [&](auto tag, const auto& np) {
-    CE::taubin_curvatures<decltype(tag)>(mesh, np);
-  });
-}
-
-void run_chen_schmitt(const Mesh& mesh, const Settings& s, const Outputs& o, int threads)
-{
-  estimate_with<Neighborhood::rings, true>(s, threads, outputs_and_normal_method(s, o), [&](auto tag, const auto& np) {
-    CE::chen_schmitt_curvatures<decltype(tag)>(mesh, np);
-  });
-}
-
-void run_jet(const Mesh& mesh, const Settings& s, const Outputs& o, int threads)
-{
-  // CGAL's jet fitting widens up to 3 rings beyond the first by default.
-  constexpr int jet_extra_rings = 3;
-  estimate_with<Neighborhood::rings_ball_or_selected, false>(
-    s, threads,
-    output_parameters(o)
-      .jet_degree(s.jet_degree.value_or(default_of(Setting::jet_degree)))
-      .monge_degree(s.monge_degree.value_or(default_of(Setting::monge_degree))),
-    [&](auto tag, const auto& np) { CE::jet_fitting_curvatures<decltype(tag)>(mesh, np); }, jet_extra_rings);
+  CE::Neighborhood_reach reach;
+  with_parameters<E>(s, Outputs(), 1, [&](auto, const auto& np) { reach = CE::neighborhood_reach(E, np); });
+  return reach;
 }
 
 } // namespace
@@ -210,23 +223,24 @@ const std::vector<Method>& methods()
 {
   // Every surface estimator reads the given normals and the normal method but curve
   // network, which reads the given normals only, and jet fitting, which fits its own frame.
-  // Fields: name, label, settings read, quantities, parallel, tetrahedral input, CGAL's fit, run.
+  // Fields: name, label, settings read, quantities, parallel, tetrahedral input, CGAL's fit, run, reach.
+  using E = CE::Estimator;
   static const std::vector<Method> all = {
     {"paraboloid", "paraboloid fit",
      Setting::rings | Setting::ball_radius | Setting::ball_radius_range | Setting::fit_degree | Setting::normals |
        Setting::given_normals,
-     gives_all, true, true, false, run_paraboloid},
+     gives_all, true, true, false, run_method<E::paraboloid_fitting>, reach_of_method<E::paraboloid_fitting>},
     {"curve-network", "curve network", Setting::extrapolation_order | Setting::given_normals, gives_all, true, false,
-     false, run_curve_network},
+     false, run_method<E::curve_network>, reach_of_method<E::curve_network>},
     {"gauss-map", "Gauss map", Setting::rings | Setting::ball_radius | Setting::normals | Setting::given_normals,
-     gives_all, true, false, false, run_gauss_map},
+     gives_all, true, false, false, run_method<E::gauss_map>, reach_of_method<E::gauss_map>},
     {"taubin", "Taubin", Setting::rings | Setting::normals | Setting::given_normals, gives_all, true, false, false,
-     run_taubin},
+     run_method<E::taubin>, reach_of_method<E::taubin>},
     {"chen-schmitt", "Chen-Schmitt", Setting::rings | Setting::normals | Setting::given_normals, gives_all, true, false,
-     false, run_chen_schmitt},
+     false, run_method<E::chen_schmitt>, reach_of_method<E::chen_schmitt>},
     {"jet", "jet fitting",
      Setting::rings | Setting::ball_radius | Setting::ball_radius_range | Setting::jet_degree | Setting::monge_degree,
-     gives_all, true, false, true, run_jet},
+     gives_all, true, false, true, run_method<E::jet_fitting>, reach_of_method<E::jet_fitting>},
   };
   return all;
 }
@@ -239,7 +253,10 @@ const Method* find_method(const std::string& name)
   return nullptr;
 }
 
-void run(const Method& method, const Mesh& mesh, const Settings& settings, const Outputs& outputs, int threads)
+namespace {
+
+// Throws std::invalid_argument where `settings` holds a setting `method` does not read, or one out of its range.
+void check(const Method& method, const Settings& settings)
 {
   // The messages are built only on failure: a benchmark counts the allocations of a run.
   const auto refuse = [&](const std::string& what) {
@@ -262,7 +279,20 @@ void run(const Method& method, const Mesh& mesh, const Settings& settings, const
     check(value, setting, integer_range(setting).max);
   check(settings.monge_degree, Setting::monge_degree,
         settings.jet_degree.value_or(integer_range(Setting::jet_degree).default_value));
+}
+
+} // namespace
+
+void run(const Method& method, const Mesh& mesh, const Settings& settings, const Outputs& outputs, int threads)
+{
+  check(method, settings);
   method.run(mesh, settings, outputs, threads);
+}
+
+CE::Neighborhood_reach reach(const Method& method, const Settings& settings)
+{
+  check(method, settings);
+  return method.reach(settings);
 }
 
 } // namespace ce_tool

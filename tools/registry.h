@@ -11,6 +11,7 @@
 
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/Vertex_normal_method.h>
+#include <CGAL/Curvature_estimation/neighborhood_reach.h>
 #include <CGAL/tags.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -112,6 +113,8 @@ struct Method
   bool cgal_fit = false;    // its fit is CGAL's (jet fitting): the report does not count it as ours
   // Writes `outputs` for every vertex of `mesh`; the library's exceptions pass through.
   void (*run)(const Mesh& mesh, const Settings& settings, const Outputs& outputs, int threads);
+  // How far it reads around a vertex with `settings` (the library's neighborhood_reach).
+  CE::Neighborhood_reach (*reach)(const Settings& settings);
 
   bool reads_setting(Setting s) const { return (reads & static_cast<unsigned>(s)) != 0; }
 };
@@ -126,6 +129,10 @@ const Method* find_method(const std::string& name);
 // most N threads, 0: all cores). Throws std::invalid_argument where `settings` holds a
 // setting the method does not read, or one out of its range, and whatever the estimator throws.
 void run(const Method& method, const Mesh& mesh, const Settings& settings, const Outputs& outputs, int threads);
+
+// How far `method` with `settings` reads around a vertex, its normals and fallbacks included;
+// throws as run does.
+CE::Neighborhood_reach reach(const Method& method, const Settings& settings);
 
 // Calls `estimate(tag)` with the concurrency tag `threads` asks for (as run takes it).
 template <typename Estimate>

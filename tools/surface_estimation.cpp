@@ -46,6 +46,20 @@ std::array<double, 2> Surface_estimates::radius_and_noise(std::size_t i) const
   return {radius_selection->radius[v], radius_selection->noise[v]};
 }
 
+Settings settings_of(const Options& o)
+{
+  Settings settings;
+  if (!o.radius && !o.radius_range && o.method->reads_setting(Setting::rings)) {
+    settings.rings = rings(o);
+    settings.max_rings = max_rings(o);
+  }
+  settings.fit_degree = o.fit_degree;
+  settings.extrapolation_order = o.order;
+  settings.jet_degree = o.degree;
+  settings.monge_degree = o.monge_degree;
+  return settings;
+}
+
 Surface_estimates estimate(const Options& o, Mesh& mesh, std::vector<V> file_to_mesh,
                            const std::optional<Normal_map>& given_normals)
 {
@@ -54,7 +68,7 @@ Surface_estimates estimate(const Options& o, Mesh& mesh, std::vector<V> file_to_
   e.file_to_mesh = std::move(file_to_mesh);
   if (is_empty(mesh))
     return e;
-  Settings settings;
+  Settings settings = settings_of(o);
   if (o.radius) {
     e.mean_edge_length = CE::mean_edge_length(mesh);
     e.ball_radius = ball_radius(*o.radius, e.mean_edge_length);
@@ -65,14 +79,7 @@ Surface_estimates estimate(const Options& o, Mesh& mesh, std::vector<V> file_to_
       radius_range(*o.radius_range, e.mean_edge_length, "the mean edge length of the mesh", "mesh units"),
       mesh.add_property_map<V, double>("v:ce_radius").first, mesh.add_property_map<V, double>("v:ce_noise").first};
     settings.radius_selection = e.radius_selection;
-  } else if (o.method->reads_setting(Setting::rings)) {
-    settings.rings = rings(o);
-    settings.max_rings = max_rings(o);
   }
-  settings.fit_degree = o.fit_degree;
-  settings.extrapolation_order = o.order;
-  settings.jet_degree = o.degree;
-  settings.monge_degree = o.monge_degree;
   settings.given_normals = given_normals;
   e.seconds = timed_estimate([&] { run(*o.method, mesh, settings, e.maps, o.threads); });
   return e;

@@ -58,6 +58,10 @@ struct Surface_estimates
   std::array<double, 2> radius_and_noise(std::size_t i) const;
 };
 
+// The settings of the options but a radius (--radius, --radius auto): rings where the method reads them and
+// no radius is given, the degrees and the extrapolation order.
+Settings settings_of(const Options& o);
+
 // Runs the method --method picks; its outputs are property maps added to `mesh`.
 // --radius Nx (and --radius auto's bounds Nx) is N times the mean edge length of `mesh`. `given_normals` (the Python
 // module's; the tool has none) are the mesh's vertex normals, for the methods that read them.

@@ -22,13 +22,17 @@ __all__ = [
     "METHODS",
     "MeshCurvatures",
     "MeshCurvaturesWithRadius",
+    "MeshReach",
     "PointSetCurvatures",
     "PointSetCurvaturesWithRadius",
+    "PointSetReach",
     "RepairWarning",
     "Status",
     "TetrahedralCurvatures",
     "mesh_curvatures",
+    "mesh_reach",
     "point_set_curvatures",
+    "point_set_reach",
     "read_off",
     "tetrahedral_curvatures",
 ]
@@ -126,6 +130,40 @@ def point_set_curvatures(points, *, number_of_neighbors=None, neighbor_radius=No
     if selection is not None:
         return PointSetCurvaturesWithRadius(*values, *selection)
     return PointSetCurvatures(*values)
+
+
+class MeshReach(NamedTuple):
+    """How far a method reads around a vertex (the library's neighborhood_reach): every vertex whose
+    position can change its values lies within `rings` rings of faces of the vertices within `distance`
+    of it, or `grown_distance` where a ball grew to condition its fit (status widened)."""
+
+    rings: int
+    distance: float
+    grown_distance: float
+
+
+class PointSetReach(NamedTuple):
+    """How far point_set_curvatures reads around a point (the library's neighborhood_reach): its
+    `neighbors` nearest points (`widened_neighbors` at a status other than ok), or the points within
+    `distance` (`grown_distance` where the ball grew). Without normals the signs follow an orientation
+    over the whole set."""
+
+    neighbors: int
+    widened_neighbors: int
+    distance: float
+    grown_distance: float
+
+
+def mesh_reach(method="paraboloid", *, rings=None, radius=None, order=None, fit_degree=None, degree=None,
+               monge_degree=None):
+    """How far mesh_curvatures with these settings reads around each vertex, its normals and fallbacks
+    included, as a MeshReach; radius: a length (not "Nx" or "auto"). Bad settings raise ValueError."""
+    return MeshReach(*_core.neighborhood_reach(method, rings, radius, order, fit_degree, degree, monge_degree))
+
+
+def point_set_reach(*, number_of_neighbors=None, neighbor_radius=None, fit_degree=2):
+    """How far point_set_curvatures with these settings reads around each point, as a PointSetReach."""
+    return PointSetReach(*_core.point_set_reach(number_of_neighbors, neighbor_radius, fit_degree))
 
 
 def tetrahedral_curvatures(vertices, tetrahedra, scalars, *, rings=None, radius=None, fit_degree=None,

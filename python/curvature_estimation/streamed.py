@@ -30,15 +30,12 @@ from typing import NamedTuple
 
 import numpy as np
 
-from . import MeshCurvatures, PointSetCurvatures, Status, mesh_curvatures, point_set_curvatures
+from . import MeshCurvatures, PointSetCurvatures, Status, mesh_curvatures, point_set_curvatures, point_set_reach
 from . import tiles as T
 
 __all__ = ["Source", "open_input", "run_directory", "run_file", "write_tiles"]
 
 CHUNK = 1 << 20  # rows read at a time
-# The point sets' fits widen their k nearest neighbors up to k << (max_rings - 1), max_rings 3
-# (point_set_neighborhood.h extend(), fit_settings.h).
-_POINT_WIDENING = 4
 
 _PLY_TYPES = {"char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1", "short": "i2", "int16": "i2",
               "ushort": "u2", "uint16": "u2", "int": "i4", "int32": "i4", "uint": "u4", "uint32": "u4",
@@ -380,13 +377,18 @@ def _owned_mask(points, tiles, lo, size, cell):
     return (T.cell_of(points[:, :2], tiles, lo, size) == cell).all(axis=1)
 
 
+def _point_reach(settings):
+    return point_set_reach(**{k: settings[k] for k in ("number_of_neighbors", "neighbor_radius", "fit_degree")
+                              if settings.get(k) is not None})
+
+
 def _point_halo(source, tiles, lo, size, settings):
     """The distance a point set's tile reaches at first: the radius, or three times the distance of
     the k-th neighbor on a flat surface of the bounds' area (checked and widened at run time)."""
-    if settings.get("neighbor_radius") is not None:
-        return float(settings["neighbor_radius"])
-    k = settings.get("number_of_neighbors") or {2: 16, 3: 32, 4: 64}[settings.get("fit_degree", 2)]
-    return 3.0 * float(np.sqrt(size[0] * size[1] / max(source.n, 1) * k / np.pi))
+    reach = _point_reach(settings)
+    if reach.distance > 0:
+        return reach.distance
+    return 3.0 * float(np.sqrt(size[0] * size[1] / max(source.n, 1) * reach.neighbors / np.pi))
 
 
 def _write_tile(directory, cell, box, halo, arrays):
@@ -537,22 +539,20 @@ def _load_tile(path):
 def _point_check(arrays, settings, status):
     """The owned points (local indices) whose neighborhood could reach past the tile's points:
     those nearer in x and y to the edge of the tile's region than their farthest neighbor could be
-    (the radius, twice it where the ball grew; the k-th nearest point in the tile, the
-    k << 2-th where the fit widened)."""
+    (point_set_reach: the radius, or the farthest of the nearest neighbors in the tile it reads, by status)."""
     from scipy.spatial import cKDTree
     points, owned = arrays["points"], np.flatnonzero(arrays["owned"])
     box, halo = tuple(arrays["box"]), arrays["halo"]
     ok = status[owned] == Status.ok
-    radius = settings.get("neighbor_radius")
-    if radius is not None:
-        reach = np.where(ok, radius, 2.0 * radius)
+    needed = _point_reach(settings)
+    if needed.distance > 0:
+        reach = np.where(ok, needed.distance, needed.grown_distance)
     else:
-        k = settings.get("number_of_neighbors") or {2: 16, 3: 32, 4: 64}[settings.get("fit_degree", 2)]
-        if len(points) <= _POINT_WIDENING * k:
+        if len(points) <= needed.widened_neighbors:
             return owned  # fewer points in the tile than a neighborhood may read
         tree = cKDTree(points)
         reach = np.empty(len(owned))
-        for where, count in ((ok, k + 1), (~ok, _POINT_WIDENING * k + 1)):  # the point itself first
+        for where, count in ((ok, needed.neighbors + 1), (~ok, needed.widened_neighbors + 1)):  # the point first
             if where.any():
                 reach[where] = tree.query(points[owned[where]], k=[count])[0][:, 0]
     return owned[T.box_gap(points[owned], box, halo) <= reach]

@@ -22,81 +22,34 @@ from typing import NamedTuple
 
 import numpy as np
 
-from . import MeshCurvatures, Status, mesh_curvatures
+from . import MeshCurvatures, Status, mesh_curvatures, mesh_reach
 
 __all__ = ["Halo", "Tile", "TiledRun", "cut_tiles", "halo_of", "mean_edge_length", "recut", "run_tile", "run_tiles"]
 
-# The library's widening and fallback constants the halo is derived from
-# (include/CGAL/Curvature_estimation/internal/fit_attempts.h, ball.h, registry.cpp).
-_GAUSS_MAP_RINGS = 2      # the Gauss map's least squares over the 2-ring of vertex normals
-_CUBIC_MIN_RINGS = 3      # cubic_min_rings: the boundary normal's cubic fit
-_JET_EXTRA_RINGS = 3      # the tool's max rings of jet fitting: rings + 3
-_BALL_GROWTH_FOR_CONDITIONING = 2.0  # ball_growth_for_conditioning
-
-
 class Halo(NamedTuple):
     """How far a tile reaches beyond the vertices it owns: `distance` in x and y (for
-    balls), then `rings` rings of faces (at least 1: the owned vertices' own faces)."""
+    balls), then `rings` rings of faces (at least 1: the owned vertices' own faces);
+    `grown_distance`, where a ball grew to condition its fit (status widened)."""
 
     rings: int
     distance: float = 0.0
+    grown_distance: float = 0.0
 
     def wider(self, needed):
-        """The halo a tile that failed its check is cut again with: one ring more and a
-        distance 1.25 times this one's (a ball's growth), at least `needed`."""
-        return Halo(max(self.rings + 1, needed.rings), max(self.distance * 1.25, needed.distance))
+        """The halo a tile that failed its check is cut again with: one ring more and
+        distances 1.25 times this one's (a ball's growth), at least `needed`."""
+        return Halo(max(self.rings + 1, needed.rings), max(self.distance * 1.25, needed.distance),
+                    max(self.grown_distance * 1.25, needed.grown_distance))
 
 
-def _max_rings(rings):
-    # The tool's max_neighborhood_rings: max(3, rings) (tools/estimation_settings.h).
-    return max(3, rings)
-
-
-def _paraboloid_rings(rings, fit_degree):
-    """The rings the paraboloid estimator reads at a vertex with its fitted normal, its
-    fits of fit_degree widened as far as fit_attempts.h lets them, and its fallbacks
-    (the plane-frame fit over the same rings, the Gauss map over the 2-ring of normals)."""
-    widest = _max_rings(rings)
-    normal = max(widest, _CUBIC_MIN_RINGS)
-    if fit_degree > 2:  # degree_attempts: up to max_rings or one ring past degree - 1
-        widest = max(widest, max(rings, fit_degree - 1) + 1)
-    return max(widest, normal, _GAUSS_MAP_RINGS + normal)
-
-
-def halo_of(method="paraboloid", *, rings=None, radius=None, order=None, fit_degree=None, degree=None,
-            monge_degree=None):
+def halo_of(method="paraboloid", **settings):
     """The halo a method with the settings of mesh_curvatures reads at a vertex, with its
-    normals and its fallbacks: rings for ring fits, a distance (radius absolute, in mesh
-    units) for balls before they grow. Ring halos bound every status; a ball that grew
-    (status widened) is checked at run time (see check_tile)."""
-    if isinstance(radius, str):
+    normals and its fallbacks (mesh_reach: the library's neighborhood_reach): rings for
+    ring fits, a distance (radius absolute, in mesh units) for balls. Ring halos bound
+    every status; a ball that grew (status widened) is checked at run time (see check_tile)."""
+    if isinstance(settings.get("radius"), str):
         raise ValueError("halo_of takes an absolute radius: convert 'Nx' with mean_edge_length first")
-    r = rings or 1
-    normal = _max_rings(r)  # the default normal's fit (quadric_fit) over max_rings at most
-    default_paraboloid = _paraboloid_rings(1, 2)
-    if method == "paraboloid":
-        if radius is not None:
-            # The normal's ball and the curvature's ball about the vertex, and the Gauss
-            # map's fallback over the ball of normals, each normal from its own ball.
-            return Halo(1, 2.0 * radius)
-        return Halo(_paraboloid_rings(r, fit_degree or 2))
-    if method == "gauss-map":
-        if radius is not None:
-            return Halo(1, 2.0 * radius)
-        return Halo(_GAUSS_MAP_RINGS + normal)
-    if method in ("taubin", "chen-schmitt"):
-        # Normal curvatures towards the rings' vertices, with the vertex's normal alone.
-        return Halo(max(r, _GAUSS_MAP_RINGS if method == "chen-schmitt" else 1, normal))
-    if method == "curve-network":
-        # Mesh lines of `order` edges each way; the paraboloid fit with its defaults as fallback.
-        return Halo(max(order or 1, default_paraboloid))
-    if method == "jet":
-        # CGAL's fit widened to rings + 3; the paraboloid fit with its defaults as fallback.
-        fallback = Halo(default_paraboloid)
-        if radius is not None:
-            return Halo(fallback.rings, radius)
-        return Halo(max(r + _JET_EXTRA_RINGS, fallback.rings))
-    raise ValueError(f"unknown method {method!r}")
+    return Halo(*mesh_reach(method, **settings))
 
 
 def first_edges(faces, n):
@@ -253,15 +206,14 @@ def check_tile(tile, points, status, needed):
     """The owned vertices (local indices) whose neighborhood could have reached an
     incomplete vertex of the tile: over rings, those fewer than needed.rings rings from
     one (a bound for every status); over a ball, those nearer than needed.distance to one
-    in x and y, or than twice that where the status is not ok (ball_growth_for_conditioning).
+    in x and y, or than needed.grown_distance where the status is not ok.
     Over a ball the check is not a proof: a ball grown for lack of vertices may reach
     farther, and a status shows the growth of the vertex's own ball, not that of its
     neighbors' normals (gauss-map); the module reports no reach per vertex."""
     owned = np.flatnonzero(tile.owned)
     if needed.distance > 0:
         gap = box_gap(points[owned], tile.box, tile.halo)
-        reach = np.where(status[owned] == Status.ok, needed.distance,
-                         _BALL_GROWTH_FOR_CONDITIONING * needed.distance)
+        reach = np.where(status[owned] == Status.ok, needed.distance, needed.grown_distance)
         suspect = gap < reach
     else:
         suspect = np.zeros(len(owned), dtype=bool)

@@ -142,19 +142,25 @@ Mesh mesh_of(const Float_array& points, const py::handle& faces, std::vector<V>&
   return build_mesh(soup, file_to_mesh, notes);
 }
 
+const Method* method_named(const std::string& name)
+{
+  const Method* method = find_method(name);
+  if (!method) {
+    std::string names;
+    for (const Method& m : methods())
+      names += std::string(names.empty() ? "" : ", ") + m.name;
+    refuse("unknown method '" + name + "' (expected one of " + names + ")");
+  }
+  return method;
+}
+
 py::tuple mesh_curvatures(const py::handle& vertices, const py::handle& faces, const std::string& method_name,
                           std::optional<int> rings, const py::object& radius, std::optional<int> order,
                           std::optional<int> fit_degree, std::optional<int> degree, std::optional<int> monge_degree,
                           const py::object& normals, int threads)
 {
-  const Method* method = find_method(method_name);
-  if (!method) {
-    std::string names;
-    for (const Method& m : methods())
-      names += std::string(names.empty() ? "" : ", ") + m.name;
-    refuse("unknown method '" + method_name + "' (expected one of " + names + ")");
-  }
-  const Options o = options(method, rings, radius, order, fit_degree, degree, monge_degree, threads, false);
+  const Options o =
+    options(method_named(method_name), rings, radius, order, fit_degree, degree, monge_degree, threads, false);
 
   const Float_array points = real_array(vertices, "vertices", 3);
   const std::size_t n = static_cast<std::size_t>(points.shape(0));
@@ -194,6 +200,27 @@ py::tuple mesh_curvatures(const py::handle& vertices, const py::handle& faces, c
   }
   const py::object selection = o.radius_range ? py::object(py::make_tuple(radius_out, noise_out)) : py::none();
   return py::make_tuple(k_max, k_min, mean, gaussian, d_max, d_min, status, repairs, selection);
+}
+
+// The library's neighborhood_reach of a method of mesh_curvatures with these settings (an absolute radius):
+// (rings, distance, grown distance).
+py::tuple neighborhood_reach(const std::string& method_name, std::optional<int> rings, const py::object& radius,
+                             std::optional<int> order, std::optional<int> fit_degree, std::optional<int> degree,
+                             std::optional<int> monge_degree)
+{
+  const Options o =
+    options(method_named(method_name), rings, radius, order, fit_degree, degree, monge_degree, 1, false);
+  if (o.radius_range || (o.radius && o.radius->in_mean_edges))
+    refuse("neighborhood_reach takes an absolute radius, got " + py::repr(radius).cast<std::string>());
+  Settings settings = settings_of(o);
+  if (o.radius)
+    settings.ball_radius = o.radius->value;
+  try {
+    const CE::Neighborhood_reach r = reach(*o.method, settings);
+    return py::make_tuple(r.rings, r.distance, r.grown_distance);
+  } catch (const std::invalid_argument& e) {
+    refuse(e.what());
+  }
 }
 
 py::tuple tetrahedral_curvatures(const py::handle& vertices, const py::handle& tetrahedra, const py::handle& scalars,
@@ -275,6 +302,10 @@ PYBIND11_MODULE(_core, m)
   m.def("mesh_curvatures", &mesh_curvatures, py::arg("vertices"), py::arg("faces"), py::arg("method"), py::arg("rings"),
         py::arg("radius"), py::arg("order"), py::arg("fit_degree"), py::arg("degree"), py::arg("monge_degree"),
         py::arg("normals"), py::arg("threads"));
+  m.def("neighborhood_reach", &neighborhood_reach, py::arg("method"), py::arg("rings"), py::arg("radius"),
+        py::arg("order"), py::arg("fit_degree"), py::arg("degree"), py::arg("monge_degree"));
+  m.def("point_set_reach", &point_set_reach, py::arg("number_of_neighbors"), py::arg("neighbor_radius"),
+        py::arg("fit_degree"));
   m.def("tetrahedral_curvatures", &tetrahedral_curvatures, py::arg("vertices"), py::arg("tetrahedra"),
         py::arg("scalars"), py::arg("rings"), py::arg("radius"), py::arg("fit_degree"), py::arg("threads"));
   m.def("point_set_curvatures", &point_set_curvatures, py::arg("points"), py::arg("number_of_neighbors"),

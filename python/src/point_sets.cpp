@@ -7,11 +7,13 @@
 #include "kernel.h"
 #include "point_set_estimation.h"
 
+#include <CGAL/Curvature_estimation/neighborhood_reach.h>
 #include <CGAL/Curvature_estimation/point_set_curvatures.h>
 
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -87,6 +89,29 @@ py::tuple point_set_curvatures(const py::handle& points, std::optional<long long
     selection = py::make_tuple(radius_out, noise_out);
   }
   return py::make_tuple(k_max, k_min, mean, gaussian, d_max, d_min, status_out, normals_out, selection);
+}
+
+py::tuple point_set_reach(std::optional<long long> number_of_neighbors, std::optional<double> neighbor_radius,
+                          int fit_degree)
+{
+  if (number_of_neighbors && neighbor_radius)
+    refuse("give number_of_neighbors or neighbor_radius, not both");
+  if (number_of_neighbors && *number_of_neighbors < 0)
+    refuse("number_of_neighbors must be at least 3, got " + std::to_string(*number_of_neighbors));
+  const auto degree = CE::parameters::fit_degree(fit_degree);
+  CE::Neighborhood_reach r;
+  try {
+    if (neighbor_radius)
+      r = CE::neighborhood_reach(CE::Estimator::point_set, degree.neighbor_radius(*neighbor_radius));
+    else if (number_of_neighbors)
+      r =
+        CE::neighborhood_reach(CE::Estimator::point_set, degree.number_of_neighbors(std::size_t(*number_of_neighbors)));
+    else
+      r = CE::neighborhood_reach(CE::Estimator::point_set, degree);
+  } catch (const std::invalid_argument& e) {
+    refuse(e.what());
+  }
+  return py::make_tuple(r.neighbors, r.widened_neighbors, r.distance, r.grown_distance);
 }
 
 } // namespace ce_python

@@ -20,6 +20,11 @@ pybind11::tuple point_set_curvatures(const pybind11::handle& points, std::option
                                      int fit_degree, const pybind11::object& normals, bool unsigned_curvatures,
                                      int threads);
 
+// The library's neighborhood_reach of point_set_curvatures with these settings: the tuple
+// (neighbors, widened neighbors, distance, grown distance).
+pybind11::tuple point_set_reach(std::optional<long long> number_of_neighbors, std::optional<double> neighbor_radius,
+                                int fit_degree);
+
 } // namespace ce_python
 
 #endif // CE_PYTHON_POINT_SETS_H

@@ -82,6 +82,22 @@ def test_every_method_is_tested():
     assert {"rings", "radius"} <= {k for _, kwargs in CASES for k in kwargs}
 
 
+def test_the_reach_reads_the_settings_as_the_estimators_do():
+    """mesh_reach and point_set_reach (the library's neighborhood_reach) refuse what the estimators
+    refuse, and widen with the settings that widen the fits: at degree 4 the normals' fits read 4 rings."""
+    assert ce.mesh_reach("paraboloid", fit_degree=4).rings == ce.mesh_reach("paraboloid").rings + 1
+    ball = ce.mesh_reach("gauss-map", radius=0.02)
+    assert (ball.rings, ball.distance, ball.grown_distance) == (1, 0.04, 0.08)  # its normals' balls: twice r
+    for method, bad in [("taubin", {"radius": 0.1}), ("paraboloid", {"radius": "3x"}),
+                        ("paraboloid", {"order": 2}), ("no-such-method", {})]:
+        with pytest.raises(ValueError):
+            ce.mesh_reach(method, **bad)
+    k = ce.point_set_reach(fit_degree=3)
+    assert (k.neighbors, k.widened_neighbors, k.distance) == (32, 128, 0.0)  # the documented default k, then 4k
+    with pytest.raises(ValueError):
+        ce.point_set_reach(number_of_neighbors=16, neighbor_radius=0.1)
+
+
 def test_tiles_partition_the_vertices_and_keep_their_order(mesh):
     vertices, faces = mesh
     tiles = T.cut_tiles(vertices, faces, (3, 3), T.Halo(2))
