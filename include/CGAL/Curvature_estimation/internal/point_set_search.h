@@ -100,6 +100,7 @@ public:
     std::sort(found.begin(), found.end(), [this](const auto& a, const auto& b) { return before(a, b); });
   }
 
+private:
   // Nearer first; at equal distances by position (x, then y, then z), then by index:
   // an order that the other points of the set do not change (a tile of the set finds
   // its points' neighbors in the order the whole set does).
@@ -113,7 +114,6 @@ public:
     return a.second < b.second;
   }
 
-private:
   static constexpr Index leaf_size = 16;
   static constexpr double infinity = std::numeric_limits<double>::infinity();
 
