@@ -18,8 +18,8 @@ namespace CE = CGAL::Curvature_estimation;
 using Search = CE::internal::Point_set_search;
 
 // The k nearest of the search are the k nearest by brute force, ties by position, then index (CGAL's radius query
-// with a cap would not give them), and the points within a radius all of them, in the same order: on random points
-// and on a grid, where most distances tie.
+// with a cap would not give them), and the points within a radius all of them, in the same order: on random points,
+// on a grid, where most distances tie, and with copies of points, which tie at 0.
 TEST(PointSetSearch, NearestNeighborsAreTheTrueNearest)
 {
   std::mt19937 gen(17);
@@ -30,7 +30,11 @@ TEST(PointSetSearch, NearestNeighborsAreTheTrueNearest)
   for (int i = 0; i < 40; ++i)
     for (int j = 0; j < 40; ++j)
       grid.emplace_back(0.1 * i, 0.1 * j, 0.);
-  for (const auto* points : {&random, &grid}) {
+  // Copies: 600 of the origin and 100 of another point among random ones, whose queries tie at 0.
+  std::vector<Eigen::Vector3d> copies(random.begin(), random.begin() + 500);
+  copies.insert(copies.begin() + 100, 600, Eigen::Vector3d::Zero());
+  copies.insert(copies.end(), 100, random[7]);
+  for (const auto* points : {&random, &grid, &copies}) {
     const Search search(*points, CGAL::Sequential_tag());
     Search::Found found;
     for (std::size_t j = 0; j < points->size(); j += 7)

@@ -72,7 +72,8 @@ public:
     // The nearest child first, so that the bound (the count-th nearest yet) shrinks
     // early; found kept sorted by insertion (count is small).
     double bound = infinity;
-    visit(i, bound, [&](double d, Index j) {
+    const auto may_join = [&](const Node& node) { return may_precede(node, found.back()); };
+    visit(i, bound, may_join, [&](double d, Index j) {
       const std::pair<double, Index> candidate(d, j);
       if (found.size() < count)
         found.push_back(candidate);
@@ -96,7 +97,8 @@ public:
     if (i >= finite_)
       return;
     double bound = radius * radius;
-    visit(i, bound, [&](double d, Index j) { found.emplace_back(d, j); });
+    visit(
+      i, bound, [](const Node&) { return true; }, [&](double d, Index j) { found.emplace_back(d, j); });
     std::sort(found.begin(), found.end(), [this](const auto& a, const auto& b) { return before(a, b); });
   }
 
@@ -124,6 +126,17 @@ private:
     Index second;     // the second child (the first follows the node); 0 for a leaf
   };
 
+  // Whether a point of `node` at the distance of `worst` could come before it, by position or index
+  // (a point's position is lexicographically at least its box's lower corner): the test that keeps
+  // the copies of a point (a scanner's returns at the origin) from being visited by every query.
+  bool may_precede(const Node& node, const std::pair<double, Index>& worst) const
+  {
+    const Eigen::Vector3d& w = points_[worst.second];
+    if (node.min != w)
+      return std::lexicographical_compare(node.min.data(), node.min.data() + 3, w.data(), w.data() + 3);
+    return node.begin < worst.second;
+  }
+
   // One formula for the points and the boxes, so that a box is never farther than its points.
   static double squared_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& q)
   {
@@ -136,9 +149,10 @@ private:
   }
 
   // Calls offer(squared distance, j) for the points j other than i within `bound`
-  // of point i (which offer may lower), the nodes' nearer child first.
-  template <typename Offer>
-  void visit(Index i, const double& bound, const Offer& offer) const
+  // of point i (which offer may lower), the nodes' nearer child first; a node whose
+  // box is at `bound` only where at_bound(node).
+  template <typename AtBound, typename Offer>
+  void visit(Index i, const double& bound, const AtBound& at_bound, const Offer& offer) const
   {
     const Eigen::Vector3d& q = points_[i];
     struct Pending
@@ -151,9 +165,9 @@ private:
     stack[size++] = {0., 0};
     while (size > 0) {
       const Pending pending = stack[--size];
-      if (pending.distance > bound)
-        continue;
       const Node& node = nodes_[pending.node];
+      if (pending.distance > bound || (pending.distance == bound && !at_bound(node)))
+        continue;
       if (node.second == 0) {
         for (Index j = node.begin; j < node.end; ++j) {
           const double d = squared_distance(points_[j], q);
