@@ -19,7 +19,7 @@ using Search = CE::internal::Point_set_search;
 
 // The k nearest of the search are the k nearest by brute force, ties by position, then index (CGAL's radius query
 // with a cap would not give them), and the points within a radius all of them, in the same order: on random points,
-// on a grid, where most distances tie, and with copies of points, which tie at 0.
+// on a grid, where most distances tie, with copies of points, which tie at 0, and with distances that overflow.
 TEST(PointSetSearch, NearestNeighborsAreTheTrueNearest)
 {
   std::mt19937 gen(17);
@@ -34,7 +34,11 @@ TEST(PointSetSearch, NearestNeighborsAreTheTrueNearest)
   std::vector<Eigen::Vector3d> copies(random.begin(), random.begin() + 500);
   copies.insert(copies.begin() + 100, 600, Eigen::Vector3d::Zero());
   copies.insert(copies.end(), 100, random[7]);
-  for (const auto* points : {&random, &grid, &copies}) {
+  // Coordinates near 1e200, whose squared distances overflow to infinity: every distance ties.
+  std::vector<Eigen::Vector3d> huge;
+  for (std::size_t i = 0; i < 300; ++i)
+    huge.push_back(1e200 * random[i]);
+  for (const auto* points : {&random, &grid, &copies, &huge}) {
     const Search search(*points, CGAL::Sequential_tag());
     Search::Found found;
     for (std::size_t j = 0; j < points->size(); j += 7)

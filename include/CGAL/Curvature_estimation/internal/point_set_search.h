@@ -72,7 +72,8 @@ public:
     // The nearest child first, so that the bound (the count-th nearest yet) shrinks
     // early; found kept sorted by insertion (count is small).
     double bound = infinity;
-    const auto may_join = [&](const Node& node) { return may_precede(node, found.back()); };
+    // (A box at an infinite bound, where squared distances overflow, is read while found is short.)
+    const auto may_join = [&](const Node& node) { return found.size() < count || may_precede(node, found.back()); };
     visit(i, bound, may_join, [&](double d, Index j) {
       const std::pair<double, Index> candidate(d, j);
       if (found.size() < count)
