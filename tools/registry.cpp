@@ -39,11 +39,10 @@ enum class Neighborhood
 
 // Calls `estimate(tag, np)`: `tag` the concurrency `threads` asks for, `np` = `base` with the
 // neighborhood N of `s` (its radius selection or its ball where it has one and N allows,
-// else its rings; max_rings defaults to max(3, rings), or to rings + `extra_rings` where
-// that is given) and, with GivenNormals, the given normals of `s` if it has any.
+// else its rings, max_rings the library's default where not set) and, with GivenNormals,
+// the given normals of `s` if it has any.
 template <Neighborhood N, bool GivenNormals, typename NamedParameters, typename Estimate>
-void estimate_with(const Settings& s, int threads, const NamedParameters& base, const Estimate& estimate,
-                   std::optional<int> extra_rings = std::nullopt)
+void estimate_with(const Settings& s, int threads, const NamedParameters& base, const Estimate& estimate)
 {
   with_threads(threads, [&](auto tag) {
     const auto with_normals = [&](const auto& np) {
@@ -71,9 +70,11 @@ void estimate_with(const Settings& s, int threads, const NamedParameters& base, 
           return;
         }
       }
-      const int rings = s.rings.value_or(default_of(Setting::rings));
-      const int max_rings = s.max_rings.value_or(extra_rings ? rings + *extra_rings : std::max(3, rings));
-      with_normals(base.neighborhood_rings(rings).max_neighborhood_rings(max_rings));
+      const auto with_rings = base.neighborhood_rings(s.rings.value_or(default_of(Setting::rings)));
+      if (s.max_rings)
+        with_normals(with_rings.max_neighborhood_rings(*s.max_rings));
+      else
+        with_normals(with_rings);
     }
   });
 }
@@ -114,14 +115,12 @@ void with_parameters(const Settings& s, const Outputs& o, int threads, const Cal
   } else if constexpr (E == CE::Estimator::taubin || E == CE::Estimator::chen_schmitt) {
     estimate_with<Neighborhood::rings, true>(s, threads, outputs_and_normal_method(s, o), call);
   } else {
-    // CGAL's jet fitting widens up to 3 rings beyond the first by default.
-    constexpr int jet_extra_rings = 3;
     estimate_with<Neighborhood::rings_ball_or_selected, false>(
       s, threads,
       output_parameters(o)
         .jet_degree(s.jet_degree.value_or(default_of(Setting::jet_degree)))
         .monge_degree(s.monge_degree.value_or(default_of(Setting::monge_degree))),
-      call, jet_extra_rings);
+      call);
   }
 }
 

@@ -34,8 +34,7 @@ using Normal_map = Mesh::Property_map<V, Kernel::Vector_3>;
 struct Settings
 {
   std::optional<int> rings;          // neighborhood_rings (default 1)
-  std::optional<int> max_rings;      // max_neighborhood_rings (default: rings + 3 for jet, as CGAL's jet
-                                     // fitting, else max(3, rings))
+  std::optional<int> max_rings;      // max_neighborhood_rings (default: the library's)
   std::optional<double> ball_radius; // ball_radius, in mesh units; instead of the rings
   // ball_radius_range (min, max), in mesh units, with its outputs vertex_ball_radius_map and
   // vertex_noise_map: the radius chosen per vertex; instead of the rings and of ball_radius.
