@@ -30,7 +30,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-from . import MeshCurvatures, PointSetCurvatures, Status, mesh_curvatures, point_set_curvatures, point_set_reach
+from . import (MeshCurvatures, MeshReach, PointSetCurvatures, Status, mesh_curvatures, point_set_curvatures,
+               point_set_reach)
 from . import tiles as T
 
 __all__ = ["Source", "open_input", "run_directory", "run_file", "write_tiles"]
@@ -431,8 +432,9 @@ def _cut_point_tile(directory, source, listed, cell, box, halo, tiles, lo, size)
 
 
 def _reach(method, settings, longest):
-    """The halo the settings need and the width of the candidates around a cell that holds it."""
-    needed = T.halo_of(method, **settings)
+    """The reach of the settings (a MeshReach) and the width of the candidates around a cell whose
+    halo holds it."""
+    needed = T.reach_of(method, **settings)
     return needed, (needed.rings + 1) * longest + needed.distance
 
 
@@ -519,7 +521,8 @@ def _write_tiles(path, directory, tiles, method, halo, settings):
     if source.is_mesh:
         settings, mean = _mesh_settings(source, directory, method, settings, grid, lo, size, longest)
         needed, _ = _reach(method, settings, longest)
-        manifest.update(method=method, mean_edge_length=mean)
+        first = T.Halo.around(needed)
+        manifest.update(method=method, mean_edge_length=mean, needed=list(needed))
     else:
         if isinstance(settings.get("neighbor_radius"), str):
             raise InputError("a point set's tiles take an absolute neighbor_radius")
@@ -528,10 +531,10 @@ def _write_tiles(path, directory, tiles, method, halo, settings):
             # alone may orient a part the other way.
             raise InputError(f"{path}: a point set without normals is cut into tiles only with unsigned=True "
                              "(the orientation of its normals is global)")
-        needed = T.Halo(0, _point_halo(source, grid, lo, size, settings))
+        first = T.Halo(0, _point_halo(source, grid, lo, size, settings))
         manifest.update(method="point-set")
-    halo = halo or needed
-    manifest.update(settings=settings, needed=list(needed), halo=list(halo))
+    halo = halo or first
+    manifest.update(settings=settings, halo=list(halo))
     cells = [(i, j) for i in range(grid[0]) for j in range(grid[1])]
     cut = _cut_all(source, directory, manifest, cells)
     manifest["tile_files"] = [t._asdict() for t in cut]
@@ -574,7 +577,7 @@ def _point_check(arrays, settings, status):
 def run_file(tile_path, result_path, kind, method, settings, needed, threads=1):
     """A task: the tile at tile_path estimated and checked; its owned values and their global indices
     written to result_path (.npz, written whole or not at all). Returns (result_path, the global
-    indices the check flags, the task's seconds)."""
+    indices the check flags, the task's seconds). needed: a mesh's MeshReach (None for a point set)."""
     start = time.monotonic()
     arrays = _load_tile(tile_path)
     owned = arrays["owned"]
@@ -582,7 +585,7 @@ def run_file(tile_path, result_path, kind, method, settings, needed, threads=1):
         tile = T.Tile(tuple(arrays["cell"]), tuple(arrays["box"]), arrays["halo"], arrays["vertices"],
                       arrays["faces"], owned, arrays["complete"])
         r = mesh_curvatures(arrays["points"], tile.faces, method, threads=threads, **settings)
-        flagged = T.check_tile(tile, arrays["points"], r.status, T.Halo(*needed))
+        flagged = T.check_tile(tile, arrays["points"], r.status, needed)
     else:
         r = point_set_curvatures(arrays["points"], normals=arrays.get("normals"), threads=threads, **settings)
         flagged = _point_check(arrays, settings, r.status)
@@ -661,7 +664,7 @@ def run_directory(directory, scheduler="serial", output=None, max_recuts=4, thre
     with open(os.path.join(directory, "manifest.json"), encoding="utf-8") as f:
         manifest = json.load(f)
     kind, method, settings = manifest["kind"], manifest["method"], manifest["settings"]
-    needed = T.Halo(*manifest["needed"])
+    needed = MeshReach(*manifest["needed"]) if kind == "mesh" else None
     results = os.path.join(directory, "results")
     os.makedirs(results, exist_ok=True)
     tiles = [TileFile(tuple(t["cell"]), tuple(t["box"]), T.Halo(*t["halo"]), os.path.join(directory, t["path"]),

@@ -24,32 +24,40 @@ import numpy as np
 
 from . import MeshCurvatures, Status, mesh_curvatures, mesh_reach
 
-__all__ = ["Halo", "Tile", "TiledRun", "cut_tiles", "halo_of", "mean_edge_length", "recut", "run_tile", "run_tiles"]
+__all__ = ["Halo", "Tile", "TiledRun", "cut_tiles", "halo_of", "mean_edge_length", "reach_of", "recut", "run_tile",
+           "run_tiles"]
 
 class Halo(NamedTuple):
     """How far a tile reaches beyond the vertices it owns: `distance` in x and y (for
-    balls), then `rings` rings of faces (at least 1: the owned vertices' own faces);
-    `grown_distance`, where a ball grew to condition its fit (status widened)."""
+    balls), then `rings` rings of faces (at least 1: the owned vertices' own faces)."""
 
     rings: int
     distance: float = 0.0
-    grown_distance: float = 0.0
+
+    @classmethod
+    def around(cls, reach):
+        """The halo that holds a reach (a MeshReach) around each owned vertex."""
+        return cls(reach.rings, reach.distance)
 
     def wider(self, needed):
         """The halo a tile that failed its check is cut again with: one ring more and
-        distances 1.25 times this one's (a ball's growth), at least `needed`."""
-        return Halo(max(self.rings + 1, needed.rings), max(self.distance * 1.25, needed.distance),
-                    max(self.grown_distance * 1.25, needed.grown_distance))
+        distances 1.25 times this one's (a ball's growth), at least those of the reach `needed`."""
+        return Halo(max(self.rings + 1, needed.rings), max(self.distance * 1.25, needed.distance))
+
+
+def reach_of(method="paraboloid", **settings):
+    """How far a method with the settings of mesh_curvatures reads at a vertex, with its
+    normals and its fallbacks, as a MeshReach (mesh_reach: the library's neighborhood_reach);
+    the radius absolute, in mesh units. Ring reaches bound every status; a ball that grew
+    (status widened) is checked at run time (see check_tile)."""
+    if isinstance(settings.get("radius"), str):
+        raise ValueError("reach_of takes an absolute radius: convert 'Nx' with mean_edge_length first")
+    return mesh_reach(method, **settings)
 
 
 def halo_of(method="paraboloid", **settings):
-    """The halo a method with the settings of mesh_curvatures reads at a vertex, with its
-    normals and its fallbacks (mesh_reach: the library's neighborhood_reach): rings for
-    ring fits, a distance (radius absolute, in mesh units) for balls. Ring halos bound
-    every status; a ball that grew (status widened) is checked at run time (see check_tile)."""
-    if isinstance(settings.get("radius"), str):
-        raise ValueError("halo_of takes an absolute radius: convert 'Nx' with mean_edge_length first")
-    return Halo(*mesh_reach(method, **settings))
+    """The halo a tile needs for the method with the settings (reach_of)."""
+    return Halo.around(reach_of(method, **settings))
 
 
 def first_edges(faces, n):
@@ -344,12 +352,12 @@ def run_tiles(vertices, faces, method="paraboloid", *, tiles=(3, 3), halo=None, 
     factor = relative_radius(settings.get("radius"))
     if factor is not None:
         settings["radius"] = factor * mean_edge_length(vertices, faces)
-    needed = halo_of(method, **settings)
+    needed = reach_of(method, **settings)
 
     n = len(vertices)
     out = MeshCurvatures(*(np.empty(n) for _ in range(4)), np.empty((n, 3)), np.empty((n, 3)),
                          np.empty(n, dtype=np.uint8))
-    cut = cut_tiles(vertices, faces, tiles, halo or needed)
+    cut = cut_tiles(vertices, faces, tiles, halo or Halo.around(needed))
 
     def task(driver, tile):
         return driver.submit(run_tile, vertices[tile.vertices], tile, method, settings, needed, threads)

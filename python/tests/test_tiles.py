@@ -138,7 +138,7 @@ def test_a_narrow_halo_is_flagged_and_repaired(mesh, case):
     settings = dict(kwargs)
     if "radius" in settings:
         settings["radius"] = 2.5 * T.mean_edge_length(vertices, faces)
-    needed = T.halo_of(method, **settings)
+    needed = T.reach_of(method, **settings)
     narrow = T.Halo(needed.rings, needed.distance / 2) if needed.distance else T.Halo(needed.rings - 1)
     actual = ce.MeshCurvatures(*(np.empty_like(a) for a in expected))
     flagged = []
