@@ -154,8 +154,10 @@ Neighborhood_reach neighborhood_reach(Estimator estimator, const NamedParameters
     case Estimator::paraboloid_fitting: {
       const internal::Fit_parameters fit =
         internal::curvature_fit_parameters(np, caller, 4, Neighborhoods::rings_ball_or_selected);
-      if (fit.settings.in_ball()) // the normal's ball about each vertex of the curvature's, then their faces
-        return internal::ball_reach(2 * fit.settings.ball_radius, 1);
+      if (fit.settings.in_ball()) // the normal's ball about each vertex of the curvature's, then the rings
+        // of the plane-frame fit and of the Gauss map's normals (the fallbacks)
+        return internal::ball_reach(2 * fit.settings.ball_radius,
+                                    (std::max)(fit.settings.max_rings, internal::gauss_map_rings + 1));
       const int rings = internal::paraboloid_rings<NamedParameters>(fit);
       return fit.settings.selects_radius() ? internal::ball_reach(2 * fit.settings.radius_range.max, rings)
                                            : internal::ring_reach(rings);
