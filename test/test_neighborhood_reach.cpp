@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // neighborhood_reach: the vertices (points) beyond an estimator's reach from a vertex can move without
 // changing its estimate there, bit for bit, status included; on clean and on noisy irregular meshes (the
-// noise widens fits and calls fallbacks), for every estimator and the settings that change the reach.
+// noise widens fits and calls fallbacks), for every estimator and the settings that change the reach;
+// over balls also with the estimators' per-vertex reach (vertex_reach_map).
 #include <CGAL/Curvature_estimation/neighborhood_reach.h>
 
 #include "common/estimator_runs.h"
@@ -82,20 +83,32 @@ Mesh moved_outside(const Mesh& mesh, Mesh::Vertex_index center, const std::vecto
   return moved;
 }
 
+// Moves every vertex beyond the reach of sampled vertices and expects their estimates unchanged. The reach:
+// neighborhood_reach's distance (grown_distance where the status is not ok), or with `per_vertex` the
+// estimator's own (vertex_reach_map: the bound where balls grow, even past grown_distance), then its rings.
+// Returns how many vertices checked reached past grown_distance.
 template <typename Run, typename NamedParameters>
-void expect_reach_bounds(const char* what, CE::Estimator estimator, Run run, const NamedParameters& np)
+std::size_t expect_reach_bounds(const char* what, CE::Estimator estimator, Run run, const NamedParameters& np,
+                                bool per_vertex = false)
 {
   const CE::Neighborhood_reach reach = CE::neighborhood_reach(estimator, np);
-  ASSERT_GE(reach.rings, 1) << what;
+  EXPECT_GE(reach.rings, 1) << what;
+  std::size_t past = 0;
   for (const double noise : {0.0, 1.0}) {
-    const Mesh mesh = ce_test::to_mesh<Mesh>(graph_mesh(noise));
-    const auto whole = ce_test::run_with_all_outputs<Kernel>(mesh, run, np);
-    std::size_t checked = 0, widened = 0;
+    Mesh mesh = ce_test::to_mesh<Mesh>(graph_mesh(noise));
+    const auto reached = mesh.add_property_map<Mesh::Vertex_index, double>("v:reach").first;
+    const auto whole = ce_test::run_with_all_outputs<Kernel>(mesh, run, np.vertex_reach_map(reached));
+    std::size_t checked = 0, widened = 0, past_here = 0;
     for (std::size_t i = 0; i < num_vertices(mesh); i += 53) { // the boundary (first 116 vertices) and inside
       const Mesh::Vertex_index v(static_cast<Mesh::size_type>(i));
       const bool ok = whole.status[i] == CE::Estimation_status::ok;
       widened += !ok;
-      const std::vector<char> inside = within_reach(mesh, v, reach.rings, ok ? reach.distance : reach.grown_distance);
+      past_here += reached[v] > reach.grown_distance;
+      if (per_vertex) {
+        EXPECT_GE(reached[v], reach.distance / 2) << what << ", vertex " << i << ": at least its own ball";
+      }
+      const double distance = per_vertex ? reached[v] : ok ? reach.distance : reach.grown_distance;
+      const std::vector<char> inside = within_reach(mesh, v, reach.rings, distance);
       const auto moved =
         ce_test::run_with_all_outputs<Kernel>(moved_outside(mesh, v, inside, std::uint32_t(i)), run, np);
       EXPECT_EQ(moved.status[i], whole.status[i]) << what << ", noise " << noise << ", vertex " << i;
@@ -104,8 +117,11 @@ void expect_reach_bounds(const char* what, CE::Estimator estimator, Run run, con
       ++checked;
     }
     EXPECT_GE(checked, 16u);
-    std::cout << what << (noise > 0 ? ", noisy: " : ", clean: ") << widened << " of " << checked << " not ok\n";
+    std::cout << what << (per_vertex ? ", its own reach" : "") << (noise > 0 ? ", noisy: " : ", clean: ") << widened
+              << " of " << checked << " not ok, " << past_here << " reached past grown_distance\n";
+    past += past_here;
   }
+  return past;
 }
 
 const auto paraboloid = [](const Mesh& m, const auto& np) { CE::paraboloid_fitting_curvatures(m, np); };
@@ -144,6 +160,21 @@ TEST(NeighborhoodReach, OtherEstimators)
   expect_reach_bounds("jet", CE::Estimator::jet_fitting, jet, params::default_values());
   expect_reach_bounds("jet, ill-conditioned", CE::Estimator::jet_fitting, jet, params::max_condition_number(1.5));
   expect_reach_bounds("jet, ball", CE::Estimator::jet_fitting, jet, params::ball_radius(3 * mean_edge()));
+}
+
+// Balls of half a mean edge grow for lack of vertices (to at least twice the fit's unknowns), past the
+// a-priori grown_distance at some vertices: the per-vertex reach still bounds what each estimate read.
+TEST(NeighborhoodReach, PerVertexReachOverBalls)
+{
+  const double h = mean_edge();
+  std::size_t past = 0;
+  for (const double r : {0.5 * h, 2.5 * h}) {
+    past += expect_reach_bounds("paraboloid, ball", CE::Estimator::paraboloid_fitting, paraboloid,
+                                params::ball_radius(r), true);
+    past += expect_reach_bounds("gauss map, ball", CE::Estimator::gauss_map, gauss_map, params::ball_radius(r), true);
+    past += expect_reach_bounds("jet, ball", CE::Estimator::jet_fitting, jet, params::ball_radius(r), true);
+  }
+  EXPECT_GT(past, 0u); // the a-priori bound alone would not do
 }
 
 TEST(NeighborhoodReach, ParametersAreTheEstimatorsOwn)

@@ -49,29 +49,44 @@ Gauss_map_differential_method gauss_map_differential_method(const NamedParameter
 }
 
 // Every vertex's unit normal, NaN where there is none: the given ones of `np`,
-// normalised, else estimated by `fit`'s method. Computed before the differential,
-// which reads each vertex's normal at all its neighbors.
+// normalised, else estimated by `fit`'s method, with the reach of its fits. Computed
+// before the differential, which reads each vertex's normal at all its neighbors.
 template <typename ConcurrencyTag, typename FaceGraph, typename VertexPointMap, typename NamedParameters>
 std::shared_ptr<const Vertex_normal_table<FaceGraph>>
 gauss_map_normals(const FaceGraph& g, const VertexPointMap& vpm, const NamedParameters& np, const Fit_parameters& fit)
 {
   using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
-  const Eigen::Vector3d no_normal = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  using Entry = typename Vertex_normal_table<FaceGraph>::Entry;
   auto normals = std::make_shared<Vertex_normal_table<FaceGraph>>(g);
   if constexpr (has_parameter<NamedParameters, ::CGAL::internal_np::vertex_normal_map_t>()) {
     const auto normal_map = ::CGAL::parameters::get_parameter(np, ::CGAL::internal_np::vertex_normal_map);
     for (vertex_descriptor v : vertices(g)) {
       const Eigen::Vector3d n = load_given_normal<true>(normal_map, v);
       const double length = n.norm();
-      normals->set(v, length > 0 && std::isfinite(length) ? Eigen::Vector3d(n / length) : no_normal);
+      Entry e;
+      if (length > 0 && std::isfinite(length))
+        e.normal = n / length;
+      normals->set(v, e);
     }
   } else {
     (void)np;
-    const Vertex_normal_estimator<FaceGraph, VertexPointMap> estimator{
-      Surface_fitter<FaceGraph, VertexPointMap>(g, vpm, fit.settings), fit.normal_method, true};
-    estimate_at_vertices<ConcurrencyTag, false>(
-      vertices(g), estimator,
-      [&](vertex_descriptor v, const Eigen::Vector3d& n) { normals->set(v, n.squaredNorm() > 0 ? n : no_normal); });
+    struct Estimator
+    {
+      Vertex_normal_estimator<FaceGraph, VertexPointMap> normals;
+      Entry estimate(vertex_descriptor v, const Eigen::Vector3d*)
+      {
+        Entry e;
+        const Eigen::Vector3d n = normals.estimate(v, nullptr);
+        if (n.squaredNorm() > 0)
+          e.normal = n;
+        e.reach = normals.reach(v);
+        return e;
+      }
+    };
+    const Estimator estimator{
+      {Surface_fitter<FaceGraph, VertexPointMap>(g, vpm, fit.settings), fit.normal_method, true}};
+    estimate_at_vertices<ConcurrencyTag, false>(vertices(g), estimator,
+                                                [&](vertex_descriptor v, const Entry& e) { normals->set(v, e); });
   }
   return normals;
 }
@@ -111,6 +126,7 @@ gauss_map_normals(const FaceGraph& g, const VertexPointMap& vpm, const NamedPara
 ///   \cgalParamNEnd
 ///   \ceBallRadiusParameter
 ///   \ceSurfaceOutputParameters{K = det A (see above), `ok`; `widened` where a ball grew; or `not_estimable`}
+///   \ceReachOutputParameter
 /// \cgalNamedParamsEnd
 ///
 /// \throws std::invalid_argument if a parameter is out of its range, or if `ball_radius`

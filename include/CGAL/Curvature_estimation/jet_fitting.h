@@ -76,6 +76,7 @@ public:
 
   // The fallback chain: CGAL's fit, else the paraboloid fit with its defaults and fallbacks.
   // Under scale selection, that or CGAL's fit over the ball selected by this package's fits.
+  // Its reach: that of the balls gathered about v.
   Surface_estimate estimate(vertex_descriptor v, const Eigen::Vector3d*)
   {
     Surface_estimate estimate;
@@ -86,6 +87,8 @@ public:
     if (selector_)
       estimate = select_estimate(estimate, selector_->select(v, nullptr, Vertex_normal_method::area_weighted),
                                  [&](double radius) { return fit(v, radius); });
+    estimate.reach =
+      (std::max)(std::sqrt(collector_.widest_squared_ball(v)), selector_ ? selector_->widest_ball(v) : 0.0);
     return estimate;
   }
 
@@ -238,6 +241,7 @@ std::pair<int, int> jet_rings(const NamedParameters& np, const char* caller)
 ///   \cgalParamNEnd
 ///   \ceUseFallbacksParameter
 ///   \ceSurfaceOutputParameters{K = k1 k2, `ok`\, `widened`\, `fallback` or `not_estimable`}
+///   \ceReachOutputParameter
 /// \cgalNamedParamsEnd
 ///
 /// \throws std::invalid_argument if a parameter is out of its range.

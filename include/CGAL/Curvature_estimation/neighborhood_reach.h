@@ -133,7 +133,8 @@ Neighborhood_reach point_set_reach(const NamedParameters& np)
 /// its fallbacks. The named parameters, their defaults and their checks are the estimator's own: pass
 /// this function the parameters the estimator is called with. A tile of a mesh whose halo holds this
 /// reach around the tile's vertices gives those vertices the values of the whole mesh (the User Manual's
-/// "Tiles" says how, and where a ball grows past `grown_distance`).
+/// "Tiles" says how). A ball may grow past `grown_distance`: the mesh estimators' output `vertex_reach_map`
+/// gives, per vertex, how far the balls it read reached.
 ///
 /// Without given normals, the signs of a point set's curvatures follow an orientation propagated over the
 /// whole set (see `point_set_curvatures()`): the reach bounds its values up to that sign.

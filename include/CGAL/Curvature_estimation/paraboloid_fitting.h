@@ -16,6 +16,7 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -41,9 +42,11 @@ public:
   // 3 and 4 over rings, the fit of degree 2; with the fitted normal and no given
   // one, the plane-frame fit (also where only the whitened test accepted the fit
   // of degree 2 at a boundary vertex), then the Gauss map. Under scale selection,
-  // that estimate or the fit over the selected ball (select_estimate).
+  // that estimate or the fit over the selected ball (select_estimate). Its reach: that of
+  // every ball gathered about v, and of the Gauss map's where it was tried.
   Surface_estimate estimate(vertex_descriptor v, const Eigen::Vector3d* given)
   {
+    gauss_map_reach_ = 0;
     Surface_estimate estimate;
     estimate_with_fallbacks(
       estimate, use_fallbacks_, [&](Surface_estimate& out) { return fit(v, given, out); },
@@ -54,6 +57,8 @@ public:
     if (selector_)
       estimate = select_estimate(estimate, selector_->select(v, given, method_),
                                  [&](double radius) { return fitter_.ball_estimate(v, given, method_, radius); });
+    estimate.reach =
+      (std::max)({fitter_.widest_ball(v), selector_ ? selector_->widest_ball(v) : 0.0, gauss_map_reach_});
     return estimate;
   }
 
@@ -103,7 +108,9 @@ private:
   {
     if (!fitted_normal(given))
       return Verdict::refused;
-    return final_estimate(out, gauss_map_.estimate(v, nullptr));
+    const Verdict verdict = final_estimate(out, gauss_map_.estimate(v, nullptr));
+    gauss_map_reach_ = out.reach;
+    return verdict;
   }
 
   bool fitted_normal(const Eigen::Vector3d* given) const
@@ -116,6 +123,7 @@ private:
   bool use_fallbacks_;
   Gauss_map_estimator<FaceGraph, VertexPointMap, Vertex_normal_estimator<FaceGraph, VertexPointMap>> gauss_map_;
   std::optional<Surface_scale_selector<FaceGraph, VertexPointMap>> selector_; // under scale selection
+  double gauss_map_reach_ = 0;                                                // of the last fallback to the Gauss map
 };
 
 } // namespace internal
@@ -159,6 +167,7 @@ private:
 ///   \ceRingParameters
 ///   \ceUseFallbacksParameter
 ///   \ceSurfaceOutputParameters{K = k1 k2, `ok`\, `widened`\, `fallback` or `not_estimable`}
+///   \ceReachOutputParameter
 /// \cgalNamedParamsEnd
 ///
 /// \throws std::invalid_argument if a parameter is out of its range.

@@ -48,7 +48,8 @@
   X(unsigned_curvatures_t, unsigned_curvatures)                                                                        \
   X(ball_radius_range_t, ball_radius_range)                                                                            \
   X(vertex_ball_radius_map_t, vertex_ball_radius_map)                                                                  \
-  X(vertex_noise_map_t, vertex_noise_map)
+  X(vertex_noise_map_t, vertex_noise_map)                                                                              \
+  X(vertex_reach_map_t, vertex_reach_map)
 #define CGAL_CE_PACKAGE_PARAMETERS(X)                                                                                  \
   CGAL_CE_PARAMETERS_SHARED_WITH_CGAL_6(X)                                                                             \
   CGAL_CE_OWN_PARAMETERS(X)

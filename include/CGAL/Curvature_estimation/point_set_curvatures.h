@@ -200,6 +200,8 @@ void point_set_curvatures(PointRange& points, const NamedParameters& np = parame
   constexpr bool random_access =
     std::is_base_of<std::random_access_iterator_tag, typename std::iterator_traits<Iterator>::iterator_category>::value;
   const char* const caller = "point_set_curvatures";
+  static_assert(!internal::has_parameter<NamedParameters, internal_np::vertex_reach_map_t>(),
+                "point_set_curvatures: vertex_reach_map is an output of the mesh estimators");
 
   const internal::Point_set_parameters parameters = internal::point_set_parameters(np, caller);
   const internal::Fit_settings& settings = parameters.fit.settings;

@@ -47,6 +47,9 @@ struct Vertex_normal_estimator
     return fitter.normal(v, method, n) || (fall_back && method == Vertex_normal_method::quadric_fit &&
                                            fitter.normal(v, Vertex_normal_method::area_weighted, n));
   }
+
+  // After find(v): the radius of the widest ball its fits gathered (0: none).
+  double reach(typename boost::graph_traits<FaceGraph>::vertex_descriptor v) { return fitter.widest_ball(v); }
 };
 
 } // namespace internal

@@ -19,6 +19,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <cstddef>
 #include <memory>
 #include <utility>
@@ -63,6 +64,8 @@ public:
   bool inside_ball(std::size_t i) const { return rings_.inside_ball(i); }
   std::size_t ball_size() const { return rings_.ball_size(); }
   std::size_t ball_joined(std::size_t k) const { return rings_.ball_joined(k); }
+  // The radius of the widest ball grown about v since the neighborhood moved to v (0: none).
+  double widest_ball(Vertex v) const { return std::sqrt(rings_.widest_squared_ball(v)); }
 
   // Face averages need no neighborhood.
   static bool gathers_for_normal(Vertex_normal_method method) { return method == Vertex_normal_method::quadric_fit; }

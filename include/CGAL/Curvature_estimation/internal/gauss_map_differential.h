@@ -141,10 +141,12 @@ private:
   Eigen::Matrix2d moments_ = Eigen::Matrix2d::Zero(), products_ = Eigen::Matrix2d::Zero();
 };
 
-// Unit vertex normals addressed by vertex, filled on the calling thread and then
-// only read by the worker threads. A vertex without a normal holds NaNs. On a
-// Surface_mesh a vector by vertex index (one allocation); on other graphs a hash
-// map (a node per vertex; concurrent `find` on a const std::unordered_map is safe).
+// Unit vertex normals addressed by vertex, with the reach of each (how far from
+// its vertex the balls it was fitted over reach, 0 for none), filled on the
+// calling thread and then only read by the worker threads. A vertex without a
+// normal holds NaNs. On a Surface_mesh a vector by vertex index (one allocation);
+// on other graphs a hash map (a node per vertex; concurrent `find` on a const
+// std::unordered_map is safe).
 template <typename FaceGraph>
 class Vertex_normal_table
 {
@@ -159,41 +161,58 @@ class Vertex_normal_table
   static constexpr bool by_index = Is_surface_mesh<FaceGraph>::value;
 
 public:
+  struct Entry
+  {
+    Eigen::Vector3d normal = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+    double reach = 0;
+  };
+
   explicit Vertex_normal_table(const FaceGraph& g)
   {
     if constexpr (by_index) // indices of removed, not yet collected vertices included
-      normals_.assign(g.number_of_vertices() + g.number_of_removed_vertices(),
-                      Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
+      entries_.assign(g.number_of_vertices() + g.number_of_removed_vertices(), Entry());
     else
-      normals_.reserve(num_vertices(g));
+      entries_.reserve(num_vertices(g));
   }
 
-  void set(vertex_descriptor v, const Eigen::Vector3d& n)
+  void set(vertex_descriptor v, const Entry& e)
   {
     if constexpr (by_index)
-      normals_[std::size_t(v)] = n;
+      entries_[std::size_t(v)] = e;
     else
-      normals_[v] = n;
+      entries_[v] = e;
   }
 
   // The unit normal of `u`; false where it has none.
   bool find(vertex_descriptor u, Eigen::Vector3d& n) const
   {
-    if constexpr (by_index) {
-      n = normals_[std::size_t(u)];
-    } else {
-      const auto it = normals_.find(u);
-      if (it == normals_.end())
-        return false;
-      n = it->second;
-    }
+    const Entry* e = entry(u);
+    if (e == nullptr)
+      return false;
+    n = e->normal;
     return n.allFinite();
   }
 
+  double reach(vertex_descriptor u) const
+  {
+    const Entry* e = entry(u);
+    return e != nullptr ? e->reach : 0;
+  }
+
 private:
-  std::conditional_t<by_index, std::vector<Eigen::Vector3d>,
-                     std::unordered_map<vertex_descriptor, Eigen::Vector3d, boost::hash<vertex_descriptor>>>
-    normals_;
+  const Entry* entry(vertex_descriptor u) const
+  {
+    if constexpr (by_index)
+      return &entries_[std::size_t(u)];
+    else {
+      const auto it = entries_.find(u);
+      return it != entries_.end() ? &it->second : nullptr;
+    }
+  }
+
+  std::conditional_t<by_index, std::vector<Entry>,
+                     std::unordered_map<vertex_descriptor, Entry, boost::hash<vertex_descriptor>>>
+    entries_;
 };
 
 // How Gauss_map_estimator combines the normals around a vertex.
@@ -217,6 +236,7 @@ struct Shared_vertex_normals
   {
     return table->find(u, n);
   }
+  double reach(typename boost::graph_traits<FaceGraph>::vertex_descriptor u) const { return table->reach(u); }
 };
 
 // The Gauss-map estimate at one vertex of a FaceGraph (faces: any polygons;
@@ -246,7 +266,20 @@ public:
       , ball_radius_(ball_radius)
   {}
 
+  // The estimate, whose reach is that of the ball of the least squares and of the balls of the
+  // normals read, from v.
   Surface_estimate estimate(vertex_descriptor v, const Eigen::Vector3d*)
+  {
+    reach_ = 0;
+    center_ = v;
+    Surface_estimate e = estimate_at(v);
+    const double ball = rings_.widest_squared_ball(v);
+    e.reach = ball > 0 ? (std::max)(reach_, std::sqrt(ball) * local_.scale()) : reach_;
+    return e;
+  }
+
+private:
+  Surface_estimate estimate_at(vertex_descriptor v)
   {
     Eigen::Vector3d normal;
     if (!lookup(v, normal) || !local_.center_on(v))
@@ -289,8 +322,15 @@ public:
     return shape_estimate_from_matrix(differential_.shape_matrix(tangents), tangents, normal, local_.scale(), true);
   }
 
-private:
-  bool lookup(vertex_descriptor u, Eigen::Vector3d& n) { return normals_.find(u, n); }
+  // The normal of u, whose reach (of its balls, if any) from the vertex estimated at joins reach_.
+  bool lookup(vertex_descriptor u, Eigen::Vector3d& n)
+  {
+    const bool found = normals_.find(u, n);
+    const double reach = normals_.reach(u);
+    if (reach > 0) // local_ is centered on center_ once its own normal is found
+      reach_ = (std::max)(reach_, (u == center_ ? 0 : local_(u).norm() * local_.scale()) + reach);
+    return found;
+  }
 
   // Gauss_map_least_squares over the vertices gathered by rings_ (in the ball
   // only, with `in_ball`); whether it is determined.
@@ -333,6 +373,8 @@ private:
   Gauss_map_least_squares least_squares_;
   Ring_collector<FaceGraph> rings_;
   double ball_radius_ = 0;
+  vertex_descriptor center_{}; // the vertex estimated at
+  double reach_ = 0;           // of the normals read there
 };
 
 } // namespace internal

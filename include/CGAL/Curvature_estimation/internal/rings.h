@@ -99,6 +99,8 @@ public:
   // Restarts at `center` with its 1-ring.
   void start(vertex_descriptor center, const FaceGraph& g)
   {
+    if (vertices_.empty() || vertices_[0] != center)
+      widest_squared_ball_ = 0;
     vertices_.clear();
     ring_ends_.clear();
     stamped_ = false;
@@ -168,7 +170,15 @@ public:
       vertices_, ring_ends_[1], squared_radius, neighbors, [&](vertex_descriptor w) { return reach(w); },
       squared_distance);
     ring_ends_.back() = vertices_.size();
+    widest_squared_ball_ = (std::max)(widest_squared_ball_, squared_radius);
     return more;
+  }
+
+  // The squared radius of the widest ball grown about `center` since it became the
+  // center, in grow_ball's units; 0 for another center or where none was grown.
+  double widest_squared_ball(vertex_descriptor center) const
+  {
+    return !vertices_.empty() && vertices_[0] == center ? widest_squared_ball_ : 0;
   }
 
   // After grow_ball: whether vertices()[i] is in the ball, their number, and the
@@ -267,6 +277,7 @@ private:
   std::vector<std::size_t> ring_ends_;
   std::vector<char> has_face_; // per incoming halfedge of the center
   Ball<vertex_descriptor> ball_;
+  double widest_squared_ball_ = 0; // since the center changed
   bool center_on_border_ = false;
   bool one_ring_in_fan_order_ = false;
   bool faces_are_triangles_ = false;

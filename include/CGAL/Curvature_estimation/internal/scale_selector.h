@@ -90,6 +90,9 @@ public:
     return selection;
   }
 
+  // The radius of the widest ball the selection at v gathered (0: none).
+  double widest_ball(Vertex v) { return samples_.neighborhood().widest_ball(v); }
+
   // The candidates of the last select(), for tests: radii in units of the 1-ring's mean edge.
   const std::vector<Scale_candidate>& candidates() const { return candidates_; }
 

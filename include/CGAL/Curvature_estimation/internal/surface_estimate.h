@@ -37,10 +37,12 @@ struct Surface_estimate
   // neighborhood and the noise estimated there.
   double radius = std::numeric_limits<double>::quiet_NaN();
   double noise = std::numeric_limits<double>::quiet_NaN();
+  // On meshes: how far from the vertex the balls it read reach (0: rings only).
+  double reach = 0;
 
   double mean_curvature() const { return 0.5 * (max_curvature + min_curvature); }
 
-  // Sets every member but the radius and the noise, with K = k1 k2.
+  // Sets every member but the radius, the noise and the reach, with K = k1 k2.
   void set_principal(Estimation_status s, double max_k, double min_k, const Eigen::Vector3d& max_d,
                      const Eigen::Vector3d& min_d, const Eigen::Vector3d& n)
   {
@@ -80,7 +82,8 @@ constexpr bool wants_curvature_output()
          has_parameter<NamedParameters, internal_np::vertex_Gaussian_curvature_map_t>() ||
          has_parameter<NamedParameters, internal_np::vertex_estimation_status_map_t>() ||
          has_parameter<NamedParameters, internal_np::vertex_ball_radius_map_t>() ||
-         has_parameter<NamedParameters, internal_np::vertex_noise_map_t>();
+         has_parameter<NamedParameters, internal_np::vertex_noise_map_t>() ||
+         has_parameter<NamedParameters, internal_np::vertex_reach_map_t>();
 }
 
 // Whether the map that `np` (of type NP) holds under `tag`, if it holds one, may
@@ -104,7 +107,8 @@ constexpr bool surface_outputs_accessible_concurrently()
          given_map_accessible_concurrently<NP>(internal_np::vertex_Gaussian_curvature_map) &&
          given_map_accessible_concurrently<NP>(internal_np::vertex_estimation_status_map) &&
          given_map_accessible_concurrently<NP>(internal_np::vertex_ball_radius_map) &&
-         given_map_accessible_concurrently<NP>(internal_np::vertex_noise_map);
+         given_map_accessible_concurrently<NP>(internal_np::vertex_noise_map) &&
+         given_map_accessible_concurrently<NP>(internal_np::vertex_reach_map);
 }
 
 // Writes the outputs that `np` asks for, and only those; `v` by reference for the
@@ -131,6 +135,8 @@ void put_surface_estimate(const NamedParameters& np, VertexDescriptor&& v, const
     put(get_parameter(np, internal_np::vertex_ball_radius_map), v, FT(e.radius));
   if constexpr (has_parameter<NamedParameters, internal_np::vertex_noise_map_t>())
     put(get_parameter(np, internal_np::vertex_noise_map), v, FT(e.noise));
+  if constexpr (has_parameter<NamedParameters, internal_np::vertex_reach_map_t>())
+    put(get_parameter(np, internal_np::vertex_reach_map), v, FT(e.reach));
   (void)np;
   (void)v;
   (void)e;

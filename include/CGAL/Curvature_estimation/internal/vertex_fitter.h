@@ -55,6 +55,9 @@ public:
 
   const Fit_settings& settings() const { return this->settings_; }
 
+  // The radius of the widest ball the fits at v gathered since the fitter moved to v (0: none).
+  double widest_ball(Vertex v) { return this->samples_.neighborhood().widest_ball(v); }
+
   // Each fit below writes its estimate into `out`, not estimable on entry, and
   // returns what else it found.
 
