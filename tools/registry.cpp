@@ -19,7 +19,8 @@ auto output_parameters(const Outputs& o)
   return CE::parameters::vertex_mean_curvature_map(o.H)
     .vertex_Gaussian_curvature_map(o.K)
     .vertex_principal_curvatures_and_directions_map(o.pcd)
-    .vertex_estimation_status_map(o.status);
+    .vertex_estimation_status_map(o.status)
+    .vertex_reach_map(o.reach);
 }
 
 // The output maps and the normal method of `s`.
@@ -207,7 +208,8 @@ Outputs add_outputs(Mesh& mesh, const std::string& prefix)
   return {
     mesh.add_property_map<V, double>(prefix + "H").first, mesh.add_property_map<V, double>(prefix + "K").first,
     mesh.add_property_map<V, CE::Principal_curvatures_and_directions<Kernel>>(prefix + "pcd").first,
-    mesh.add_property_map<V, CE::Estimation_status>(prefix + "status", CE::Estimation_status::not_estimable).first};
+    mesh.add_property_map<V, CE::Estimation_status>(prefix + "status", CE::Estimation_status::not_estimable).first,
+    mesh.add_property_map<V, double>(prefix + "reach").first};
 }
 
 void remove_outputs(Mesh& mesh, Outputs& outputs)
@@ -216,6 +218,7 @@ void remove_outputs(Mesh& mesh, Outputs& outputs)
   mesh.remove_property_map(outputs.K);
   mesh.remove_property_map(outputs.pcd);
   mesh.remove_property_map(outputs.status);
+  mesh.remove_property_map(outputs.reach);
 }
 
 const std::vector<Method>& methods()

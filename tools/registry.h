@@ -95,9 +95,10 @@ struct Outputs
   Mesh::Property_map<V, double> H, K;
   Mesh::Property_map<V, CE::Principal_curvatures_and_directions<Kernel>> pcd;
   Mesh::Property_map<V, CE::Estimation_status> status;
+  Mesh::Property_map<V, double> reach; // vertex_reach_map: the tiles check it
 };
 
-// The four maps added to `mesh` as PREFIX + H, K, pcd and status (not_estimable until written).
+// The five maps added to `mesh` as PREFIX + H, K, pcd, status (not_estimable until written) and reach.
 Outputs add_outputs(Mesh& mesh, const std::string& prefix);
 void remove_outputs(Mesh& mesh, Outputs& outputs);
 

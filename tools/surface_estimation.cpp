@@ -46,6 +46,12 @@ std::array<double, 2> Surface_estimates::radius_and_noise(std::size_t i) const
   return {radius_selection->radius[v], radius_selection->noise[v]};
 }
 
+double Surface_estimates::reach(std::size_t i) const
+{
+  const V v = file_to_mesh[i];
+  return v == V() ? 0 : maps.reach[v];
+}
+
 Settings settings_of(const Options& o)
 {
   Settings settings;

@@ -56,6 +56,8 @@ struct Surface_estimates
   // With --radius auto: the chosen radius and the noise of the file's vertex i; NaN
   // where its row is failed.
   std::array<double, 2> radius_and_noise(std::size_t i) const;
+  // The library's vertex_reach_map at the file's vertex i (0 where it is in no face).
+  double reach(std::size_t i) const;
 };
 
 // The settings of the options but a radius (--radius, --radius auto): rings where the method reads them and

@@ -102,13 +102,21 @@ def mesh_curvatures(vertices, faces, method="paraboloid", *, rings=None, radius=
     non-manifold vertices) are repaired as the tool repairs them, with a RepairWarning
     saying what changed; a vertex in no face is failed. Bad input raises ValueError.
     """
-    *values, repairs, selection = _core.mesh_curvatures(vertices, faces, method, rings, radius, order,
-                                                        fit_degree, degree, monge_degree, normals, threads)
+    return _mesh_curvatures(vertices, faces, method, rings=rings, radius=radius, order=order, fit_degree=fit_degree,
+                            degree=degree, monge_degree=monge_degree, normals=normals, threads=threads)[0]
+
+
+def _mesh_curvatures(vertices, faces, method, *, rings=None, radius=None, order=None, fit_degree=None, degree=None,
+                     monge_degree=None, normals=None, threads=0):
+    """mesh_curvatures' result and, per vertex, the library's vertex_reach_map (how far the balls its
+    estimate read reach; 0 over rings only, and at a vertex in no face)."""
+    *values, repairs, selection, reach = _core.mesh_curvatures(vertices, faces, method, rings, radius, order,
+                                                               fit_degree, degree, monge_degree, normals, threads)
     for repair in repairs:
-        warnings.warn(repair, RepairWarning, stacklevel=2)
+        warnings.warn(repair, RepairWarning, stacklevel=3)
     if selection is not None:
-        return MeshCurvaturesWithRadius(*values, *selection)
-    return MeshCurvatures(*values)
+        return MeshCurvaturesWithRadius(*values, *selection), reach
+    return MeshCurvatures(*values), reach
 
 
 def point_set_curvatures(points, *, number_of_neighbors=None, neighbor_radius=None, radius=None, fit_degree=2,

@@ -30,7 +30,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from . import (MeshCurvatures, MeshReach, PointSetCurvatures, Status, mesh_curvatures, point_set_curvatures,
+from . import (MeshCurvatures, MeshReach, PointSetCurvatures, Status, _mesh_curvatures, point_set_curvatures,
                point_set_reach)
 from . import tiles as T
 
@@ -577,22 +577,25 @@ def _point_check(arrays, settings, status):
 def run_file(tile_path, result_path, kind, method, settings, needed, threads=1):
     """A task: the tile at tile_path estimated and checked; its owned values and their global indices
     written to result_path (.npz, written whole or not at all). Returns (result_path, the global
-    indices the check flags, the task's seconds). needed: a mesh's MeshReach (None for a point set)."""
+    indices the check flags, the farthest their balls reached, the task's seconds). needed: a mesh's
+    MeshReach (None for a point set)."""
     start = time.monotonic()
     arrays = _load_tile(tile_path)
     owned = arrays["owned"]
     if kind == "mesh":
         tile = T.Tile(tuple(arrays["cell"]), tuple(arrays["box"]), arrays["halo"], arrays["vertices"],
                       arrays["faces"], owned, arrays["complete"])
-        r = mesh_curvatures(arrays["points"], tile.faces, method, threads=threads, **settings)
-        flagged = T.check_tile(tile, arrays["points"], r.status, needed)
+        r, reach = _mesh_curvatures(arrays["points"], tile.faces, method, threads=threads, **settings)
+        flagged = T.check_tile(tile, arrays["points"], reach, needed)
+        reached = float(reach[flagged].max(initial=0.0))
     else:
         r = point_set_curvatures(arrays["points"], normals=arrays.get("normals"), threads=threads, **settings)
         flagged = _point_check(arrays, settings, r.status)
+        reached = 0.0
     partial = result_path + ".partial.npz"
     np.savez(partial, vertices=arrays["vertices"][owned], **{f: a[owned] for f, a in zip(r._fields, r)})
     os.replace(partial, result_path)
-    return result_path, arrays["vertices"][flagged], time.monotonic() - start
+    return result_path, arrays["vertices"][flagged], reached, time.monotonic() - start
 
 
 def _columns(kind, n):
@@ -676,11 +679,11 @@ def run_directory(directory, scheduler="serial", output=None, max_recuts=4, thre
         result = os.path.join(results, f"{tile.cell[0]}_{tile.cell[1]}.npz")
         return driver.submit(run_file, tile.path, result, kind, method, settings, needed, threads)
 
-    def again(tile):
+    def again(tile, reached):
         nonlocal source
         if source is None:
             source = open_input(manifest["input"], directory)
-        wider = tile.halo.wider(needed) if kind == "mesh" else T.Halo(0, tile.halo.distance * 1.5)
+        wider = tile.halo.wider(needed, reached) if kind == "mesh" else T.Halo(0, tile.halo.distance * 1.5)
         return _cut_all(source, directory, dict(manifest, halo=list(wider)), [tile.cell])[0]
 
     def keep(tile, result):

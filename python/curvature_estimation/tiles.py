@@ -9,8 +9,9 @@ faces more) and the faces touching all but its last ring: its vertices keep thei
 relative order and its faces theirs, so that the mesh built from a tile walks around a
 vertex whose faces are all in the tile as the whole mesh's does (see the manual). After
 a run each owned vertex is checked against the tile's incomplete vertices (those missing
-some of their faces): where its neighborhood, by its method, settings and status, could
-have reached one, the tile is cut again with a wider halo and run again.
+some of their faces): where its neighborhood could have reached one (by the rings its
+method reads with its settings, and by how far the balls it read reached), the tile is
+cut again with a wider halo and run again.
 """
 
 import math
@@ -22,7 +23,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from . import MeshCurvatures, Status, mesh_curvatures, mesh_reach
+from . import MeshCurvatures, Status, _mesh_curvatures, mesh_reach
 
 __all__ = ["Halo", "Tile", "TiledRun", "cut_tiles", "halo_of", "mean_edge_length", "reach_of", "recut", "run_tile",
            "run_tiles"]
@@ -39,17 +40,18 @@ class Halo(NamedTuple):
         """The halo that holds a reach (a MeshReach) around each owned vertex."""
         return cls(reach.rings, reach.distance)
 
-    def wider(self, needed):
+    def wider(self, needed, reached=0.0):
         """The halo a tile that failed its check is cut again with: one ring more and
-        distances 1.25 times this one's (a ball's growth), at least those of the reach `needed`."""
-        return Halo(max(self.rings + 1, needed.rings), max(self.distance * 1.25, needed.distance))
+        distances 1.25 times this one's (a ball's growth), at least those of the reach `needed`
+        and the farthest `reached` by the balls of its flagged vertices."""
+        return Halo(max(self.rings + 1, needed.rings), max(self.distance * 1.25, needed.distance, reached * 1.001))
 
 
 def reach_of(method="paraboloid", **settings):
     """How far a method with the settings of mesh_curvatures reads at a vertex, with its
     normals and its fallbacks, as a MeshReach (mesh_reach: the library's neighborhood_reach);
-    the radius absolute, in mesh units. Ring reaches bound every status; a ball that grew
-    (status widened) is checked at run time (see check_tile)."""
+    the radius absolute, in mesh units. Ring reaches bound every status; balls, as they grew,
+    are checked at run time by the library's per-vertex reach (see check_tile)."""
     if isinstance(settings.get("radius"), str):
         raise ValueError("reach_of takes an absolute radius: convert 'Nx' with mean_edge_length first")
     return mesh_reach(method, **settings)
@@ -210,36 +212,39 @@ def box_gap(points, box, halo):
     return np.minimum(np.minimum(x - (x0 - d), (x1 + d) - x), np.minimum(y - (y0 - d), (y1 + d) - y))
 
 
-def check_tile(tile, points, status, needed):
-    """The owned vertices (local indices) whose neighborhood could have reached an
-    incomplete vertex of the tile: over rings, those fewer than needed.rings rings from
-    one (a bound for every status); over a ball, those nearer than needed.distance to one
-    in x and y, or than needed.grown_distance where the status is not ok.
-    Over a ball the check is not a proof: a ball grown for lack of vertices may reach
-    farther, and a status shows the growth of the vertex's own ball, not that of its
-    neighbors' normals (gauss-map); the module reports no reach per vertex."""
+def check_tile(tile, points, reach, needed):
+    """The owned vertices (local indices) whose estimate could have read an incomplete
+    vertex of the tile: those fewer than needed.rings rings from one (the rings they read,
+    a bound for every status), and those with one within their `reach` (per local vertex,
+    the library's vertex_reach_map: how far the balls each estimate read reached, as they
+    grew)."""
     owned = np.flatnonzero(tile.owned)
-    if needed.distance > 0:
-        gap = box_gap(points[owned], tile.box, tile.halo)
-        reach = np.where(status[owned] == Status.ok, needed.distance, needed.grown_distance)
-        suspect = gap < reach
-    else:
-        suspect = np.zeros(len(owned), dtype=bool)
     rings = _ring_distance(tile.faces, ~tile.complete, needed.rings)
-    suspect |= rings[owned] < needed.rings
+    suspect = rings[owned] < needed.rings
+    # The margin covers the rounding of the distances the balls were measured with. Only the
+    # vertices nearer the edge of the complete region (the cell widened by the halo's distance)
+    # than their reach can have an incomplete vertex within it.
+    reach = reach[owned] * (1 + 1e-9)
+    near = np.flatnonzero(box_gap(points[owned], tile.box, tile.halo) < reach)
+    incomplete = points[~tile.complete]
+    if len(near) and len(incomplete):
+        from scipy.spatial import cKDTree
+        distance, _ = cKDTree(incomplete).query(points[owned[near]], distance_upper_bound=reach[near].max())
+        suspect[near] |= distance <= reach[near]
     return owned[suspect]
 
 
 def run_tile(points, tile, method, settings, needed, threads=1):
     """A task: mesh_curvatures on the tile (points: its vertices' coordinates) and the
     check. Returns the owned vertices' global indices, their values as MeshCurvatures,
-    the global indices of those the check flags, and the seconds the task took."""
+    the global indices of those the check flags, the farthest their balls reached (0 for
+    none), and the seconds the task took."""
     start = time.monotonic()
-    r = mesh_curvatures(points, tile.faces, method, threads=threads, **settings)
-    flagged = check_tile(tile, points, r.status, needed)
+    r, reach = _mesh_curvatures(points, tile.faces, method, threads=threads, **settings)
+    flagged = check_tile(tile, points, reach, needed)
     owned = tile.owned
     return (tile.vertices[owned], MeshCurvatures(*(a[owned] for a in r)), tile.vertices[flagged],
-            time.monotonic() - start)
+            float(reach[flagged].max(initial=0.0)), time.monotonic() - start)
 
 
 class TiledRun(NamedTuple):
@@ -363,22 +368,24 @@ def run_tiles(vertices, faces, method="paraboloid", *, tiles=(3, 3), halo=None, 
         return driver.submit(run_tile, vertices[tile.vertices], tile, method, settings, needed, threads)
 
     def keep(tile, result):
-        owned, values, _, _ = result
+        owned, values = result[:2]
         for column, value in zip(out, values):
             column[owned] = value
         return len(owned)
 
-    kept, recuts, task_seconds = schedule(scheduler, cut, task, lambda tile: recut(vertices, faces, tile,
-                                                                                     tile.halo.wider(needed)),
-                                          keep, max_recuts, progress)
+    def again(tile, reached):
+        return recut(vertices, faces, tile, tile.halo.wider(needed, reached))
+
+    kept, recuts, task_seconds = schedule(scheduler, cut, task, again, keep, max_recuts, progress)
     return out, TiledRun(len(cut), recuts, sum(len(t.vertices) for t in kept) / n - 1, time.monotonic() - start,
                          task_seconds, {t.cell: t.halo for t in kept})
 
 
 def schedule(scheduler, tiles, task, again, keep, max_recuts=4, progress=None):
     """Runs every tile as task(driver, tile) (a future of the driver of `scheduler`, see
-    run_tiles) whose result ends with the global indices the check flags and the task's
-    seconds; a flagged tile is replaced by again(tile) and run again, at most max_recuts
+    run_tiles) whose result ends with the global indices the check flags, the farthest
+    their balls reached and the task's seconds; a flagged tile is replaced by
+    again(tile, reached) and run again, at most max_recuts
     times per cell (then RuntimeError), the others go to keep(tile, result), which returns
     the vertices it stitched. Returns (the tiles kept, the re-cuts, the tasks' seconds)."""
     if progress is True:
@@ -400,14 +407,14 @@ def schedule(scheduler, tiles, task, again, keep, max_recuts=4, progress=None):
             for future in driver.completed(pending):
                 tile = futures.pop(future)
                 result = driver.result(future)
-                flagged, seconds = result[-2:]
+                flagged, reached, seconds = result[-3:]
                 task_seconds += seconds
                 if len(flagged):
                     recuts[tile.cell] = recuts.get(tile.cell, 0) + 1
                     if recuts[tile.cell] > max_recuts:
                         raise RuntimeError(f"tile {tile.cell}: {len(flagged)} vertices still flagged with the halo "
                                            f"{tile.halo}, after {max_recuts} re-cuts")
-                    again_pending.append(submit(again(tile)))
+                    again_pending.append(submit(again(tile, reached)))
                     continue
                 stitched += keep(tile, result)
                 kept.append(tile)

@@ -189,6 +189,8 @@ py::tuple mesh_curvatures(const py::handle& vertices, const py::handle& faces, c
   py::array_t<std::uint8_t> status(static_cast<py::ssize_t>(n));
   Surface_outputs out{k_max.mutable_data(), k_min.mutable_data(), mean.mutable_data(),  gaussian.mutable_data(),
                       d_max.mutable_data(), d_min.mutable_data(), status.mutable_data()};
+  auto reach = new_array(n);
+  out.reach = reach.mutable_data();
   auto radius_out = new_array(o.radius_range ? n : 0), noise_out = new_array(o.radius_range ? n : 0);
   if (o.radius_range) {
     out.radius = radius_out.mutable_data();
@@ -199,7 +201,7 @@ py::tuple mesh_curvatures(const py::handle& vertices, const py::handle& faces, c
     write_rows(estimate(o, mesh, std::move(file_to_mesh), given_normals), out);
   }
   const py::object selection = o.radius_range ? py::object(py::make_tuple(radius_out, noise_out)) : py::none();
-  return py::make_tuple(k_max, k_min, mean, gaussian, d_max, d_min, status, repairs, selection);
+  return py::make_tuple(k_max, k_min, mean, gaussian, d_max, d_min, status, repairs, selection, reach);
 }
 
 // The library's neighborhood_reach of a method of mesh_curvatures with these settings (an absolute radius):

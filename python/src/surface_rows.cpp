@@ -36,6 +36,8 @@ void write_rows(const ce_tool::Surface_estimates& rows, const Surface_outputs& o
       out.radius[i] = radius;
       out.noise[i] = noise;
     }
+    if (out.reach != nullptr)
+      out.reach[i] = rows.reach(i);
   }
 }
 

@@ -24,7 +24,7 @@ struct Surface_outputs
 {
   double *k_max, *k_min, *mean, *gaussian, *d_max, *d_min;
   std::uint8_t* status;
-  double *radius = nullptr, *noise = nullptr;
+  double *radius = nullptr, *noise = nullptr, *reach = nullptr;
 };
 
 // Row i of `rows` (the file's vertex i) into element i of each output.

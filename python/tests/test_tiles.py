@@ -2,8 +2,9 @@
 """Tiles with halos (curvature_estimation.tiles): the tiled run equals one process bit for
 bit, statuses included, for every method with rings and with a radius (absolute and in
 mean edge lengths) on 3x3 and 4x4 tiles of a jittered 50k-vertex grid; a halo one ring too
-narrow makes differences that the check flags, every one, and the re-cut repairs; the
-same tiles on a LocalCluster of 2 worker processes give the serial driver's result."""
+narrow makes differences that the check flags, every one, and the re-cut repairs, as do
+balls grown past any halo known before the run; the same tiles on a LocalCluster of 2
+worker processes give the serial driver's result."""
 
 import os
 import signal
@@ -143,7 +144,7 @@ def test_a_narrow_halo_is_flagged_and_repaired(mesh, case):
     actual = ce.MeshCurvatures(*(np.empty_like(a) for a in expected))
     flagged = []
     for tile in T.cut_tiles(vertices, faces, (3, 3), narrow):
-        owned, values, flags, _ = T.run_tile(vertices[tile.vertices], tile, method, settings, needed)
+        owned, values, flags, _, _ = T.run_tile(vertices[tile.vertices], tile, method, settings, needed)
         for column, value in zip(actual, values):
             column[owned] = value
         flagged.append(flags)
@@ -152,6 +153,51 @@ def test_a_narrow_halo_is_flagged_and_repaired(mesh, case):
     assert len(wrong) > 0  # the halo is too narrow: the control can fail
     assert np.isin(wrong, flagged).all()
     repaired, run = T.run_tiles(vertices, faces, method, tiles=(3, 3), halo=narrow, **kwargs)
+    assert run.recuts > 0
+    assert_same(repaired, expected)
+
+
+@pytest.fixture(scope="module")
+def sparse_band():
+    """A Delaunay mesh of random points over the unit square, 40 times sparser (6 times the spacing)
+    in a band across the cut between the first two columns of 3x3 tiles than elsewhere: there, balls
+    of 2.5 mean edges grow for lack of vertices past the reach known before the run."""
+    from scipy.spatial import Delaunay
+    rng = np.random.default_rng(47)
+    xy = rng.random((24000, 2))
+    band = (xy[:, 0] > 0.2) & (xy[:, 0] < 0.45)
+    xy = xy[~band | (rng.random(len(xy)) < 1 / 40)]
+    vertices = np.column_stack([xy, 0.2 * np.sin(3 * xy[:, 0]) * np.cos(2 * xy[:, 1])])
+    faces = Delaunay(xy).simplices.astype(np.int64)
+    a, b, c = (xy[faces[:, k]] for k in range(3))
+    clockwise = np.cross(b - a, c - a) < 0
+    faces[clockwise] = faces[clockwise][:, ::-1]  # every face counterclockwise: a mesh that needs no repair
+    return vertices, faces
+
+
+def test_balls_grown_past_the_reach_are_flagged_and_repaired(sparse_band):
+    """With the halo of the reach known before the run, the owned vertices whose balls (the Gauss
+    map's and its normals') grew past it differ from one process; the check flags every one of them
+    (by the library's per-vertex reach), and the re-cut repairs the run. (The paraboloid fit's and jet
+    fitting's halos also hold the rings of their fallbacks, which on this mesh hold their grown balls.)"""
+    method = "gauss-map"
+    vertices, faces = sparse_band
+    radius = 2.5 * T.mean_edge_length(vertices, faces)
+    expected, reach = ce._mesh_curvatures(vertices, faces, method, radius=radius, threads=1)
+    needed = T.reach_of(method, radius=radius)
+    assert reach.max() > needed.grown_distance  # no halo known before the run holds every ball
+    actual = ce.MeshCurvatures(*(np.empty_like(a) for a in expected))
+    flagged = []
+    for tile in T.cut_tiles(vertices, faces, (3, 3), T.Halo.around(needed)):
+        owned, values, flags, _, _ = T.run_tile(vertices[tile.vertices], tile, method, {"radius": radius}, needed)
+        for column, value in zip(actual, values):
+            column[owned] = value
+        flagged.append(flags)
+    flagged = np.concatenate(flagged)
+    wrong = differing(actual, expected)
+    assert len(wrong) > 0  # the control can fail
+    assert np.isin(wrong, flagged).all()
+    repaired, run = T.run_tiles(vertices, faces, method, tiles=(3, 3), radius=radius)
     assert run.recuts > 0
     assert_same(repaired, expected)
 
