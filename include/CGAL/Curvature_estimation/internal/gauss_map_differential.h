@@ -10,12 +10,11 @@
 #include <CGAL/Curvature_estimation/internal/rings.h>
 #include <CGAL/Curvature_estimation/internal/shape_matrix_estimate.h>
 #include <CGAL/Curvature_estimation/internal/tangent_frame.h>
+#include <CGAL/Curvature_estimation/internal/vertex_normal_table.h>
 
-#include <CGAL/Surface_mesh/Surface_mesh_fwd.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
-#include <boost/functional/hash.hpp>
 #include <boost/graph/graph_traits.hpp>
 
 #include <Eigen/Core>
@@ -24,8 +23,6 @@
 #include <cstddef>
 #include <limits>
 #include <memory>
-#include <type_traits>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -139,80 +136,6 @@ public:
 
 private:
   Eigen::Matrix2d moments_ = Eigen::Matrix2d::Zero(), products_ = Eigen::Matrix2d::Zero();
-};
-
-// Unit vertex normals addressed by vertex, with the reach of each (how far from
-// its vertex the balls it was fitted over reach, 0 for none), filled on the
-// calling thread and then only read by the worker threads. A vertex without a
-// normal holds NaNs. On a Surface_mesh a vector by vertex index (one allocation);
-// on other graphs a hash map (a node per vertex; concurrent `find` on a const
-// std::unordered_map is safe).
-template <typename FaceGraph>
-class Vertex_normal_table
-{
-  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
-
-  template <typename Graph>
-  struct Is_surface_mesh : std::false_type
-  {};
-  template <typename P>
-  struct Is_surface_mesh<CGAL::Surface_mesh<P>> : std::true_type
-  {};
-  static constexpr bool by_index = Is_surface_mesh<FaceGraph>::value;
-
-public:
-  struct Entry
-  {
-    Eigen::Vector3d normal = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
-    double reach = 0;
-  };
-
-  explicit Vertex_normal_table(const FaceGraph& g)
-  {
-    if constexpr (by_index) // indices of removed, not yet collected vertices included
-      entries_.assign(g.number_of_vertices() + g.number_of_removed_vertices(), Entry());
-    else
-      entries_.reserve(num_vertices(g));
-  }
-
-  void set(vertex_descriptor v, const Entry& e)
-  {
-    if constexpr (by_index)
-      entries_[std::size_t(v)] = e;
-    else
-      entries_[v] = e;
-  }
-
-  // The unit normal of `u`; false where it has none.
-  bool find(vertex_descriptor u, Eigen::Vector3d& n) const
-  {
-    const Entry* e = entry(u);
-    if (e == nullptr)
-      return false;
-    n = e->normal;
-    return n.allFinite();
-  }
-
-  double reach(vertex_descriptor u) const
-  {
-    const Entry* e = entry(u);
-    return e != nullptr ? e->reach : 0;
-  }
-
-private:
-  const Entry* entry(vertex_descriptor u) const
-  {
-    if constexpr (by_index)
-      return &entries_[std::size_t(u)];
-    else {
-      const auto it = entries_.find(u);
-      return it != entries_.end() ? &it->second : nullptr;
-    }
-  }
-
-  std::conditional_t<by_index, std::vector<Entry>,
-                     std::unordered_map<vertex_descriptor, Entry, boost::hash<vertex_descriptor>>>
-    entries_;
 };
 
 // How Gauss_map_estimator combines the normals around a vertex.
