@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The vertex loop shared by the estimators: sequential, or TBB-parallel in blocks.
+// The vertex loop shared by the estimators, and a plain index loop: sequential, or
+// TBB-parallel in blocks.
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_FOR_EACH_VERTEX_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_FOR_EACH_VERTEX_H
 
@@ -109,6 +110,27 @@ void for_each_vertex(const VertexRange& vertices, const Worker& worker, Store st
   Worker local = worker;
   for (const auto& v : vertices)
     store(v, local.compute(v, local.load(v)));
+}
+
+// body(i) for every i in [0, n): in order, or on TBB's threads in blocks (body
+// touches no property map).
+template <typename ConcurrencyTag, typename Body>
+void for_each_index(std::size_t n, const Body& body)
+{
+#ifndef CGAL_LINKED_WITH_TBB
+  static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
+                "Parallel_tag is enabled but TBB is unavailable.");
+#else
+  if constexpr (std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& range) {
+      for (std::size_t i = range.begin(); i != range.end(); ++i)
+        body(i);
+    });
+    return;
+  }
+#endif
+  for (std::size_t i = 0; i < n; ++i)
+    body(i);
 }
 
 } // namespace internal

@@ -5,6 +5,7 @@
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_POINT_SET_SEARCH_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_POINT_SET_SEARCH_H
 
+#include <CGAL/Curvature_estimation/internal/for_each_vertex.h>
 #include <CGAL/tags.h>
 
 #include <Eigen/Core>
@@ -41,12 +42,12 @@ public:
   Point_set_search(const std::vector<Eigen::Vector3d>& points, ConcurrencyTag)
   {
     const std::vector<Key> keys = spatial_order<ConcurrencyTag>(points);
-    order_.reserve(points.size());
-    points_.reserve(points.size());
-    for (const Key& key : keys) {
-      order_.push_back(key.second);
-      points_.push_back(points[key.second]);
-    }
+    order_.resize(points.size());
+    points_.resize(points.size());
+    for_each_index<ConcurrencyTag>(points.size(), [&](std::size_t i) {
+      order_[i] = keys[i].second;
+      points_[i] = points[keys[i].second];
+    });
     while (finite_ < points_.size() && points_[finite_].allFinite()) // the non-finite points are last
       ++finite_;
     if (finite_ > 0)
@@ -229,7 +230,7 @@ private:
     const Eigen::Vector3d scale =
       (double(1 << 21) - 1) * (box.sizes().array() > 0).select(box.sizes().cwiseInverse(), 0);
     std::vector<Key> keys(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i) {
+    for_each_index<ConcurrencyTag>(points.size(), [&](std::size_t i) {
       std::uint64_t key = ~std::uint64_t(0); // the non-finite points last
       if (points[i].allFinite()) {
         key = 0;
@@ -242,7 +243,7 @@ private:
             key = (key << 1) | ((cell[c] >> bit) & 1);
       }
       keys[i] = {key, Index(i)};
-    }
+    });
 #ifdef CGAL_LINKED_WITH_TBB
     if (std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value)
       tbb::parallel_sort(keys.begin(), keys.end());
