@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // A consistent orientation of the unoriented normals of a point set: a maximum
 // spanning tree of the agreement between neighbors' normals (as CGAL's
-// mst_orient_normals, without reordering the points), then one side per
-// connected part. The manual's "Point sets" says where it can flip.
+// mst_orient_normals, without reordering the points), grown in blocks in
+// parallel and joined, then one side per connected part. The manual's "Point
+// sets" says where it can flip.
 #ifndef CGAL_CURVATURE_ESTIMATION_INTERNAL_NORMAL_ORIENTATION_H
 #define CGAL_CURVATURE_ESTIMATION_INTERNAL_NORMAL_ORIENTATION_H
+
+#include <CGAL/Curvature_estimation/internal/for_each_vertex.h>
 
 #include <Eigen/Core>
 
@@ -54,8 +57,10 @@ public:
     }
   };
 
-  explicit Prim_front(std::size_t points)
-      : position_(points, absent)
+  // The front over the points first, ..., first + points - 1.
+  Prim_front(std::size_t first, std::size_t points)
+      : first_(first)
+      , position_(points, absent)
   {}
 
   bool empty() const { return heap_.empty(); }
@@ -63,7 +68,7 @@ public:
   // Keeps the edge if it is the best yet to its point.
   void offer(const Edge& edge)
   {
-    std::uint32_t at = position_[edge.point];
+    std::uint32_t at = position_[edge.point - first_];
     if (at == absent) {
       at = std::uint32_t(heap_.size());
       heap_.push_back(edge);
@@ -77,7 +82,7 @@ public:
   Edge pop()
   {
     const Edge top = heap_.front();
-    position_[top.point] = absent;
+    position_[top.point - first_] = absent;
     const Edge last = heap_.back();
     heap_.pop_back();
     if (!heap_.empty()) {
@@ -93,7 +98,7 @@ private:
   void place(std::uint32_t at, const Edge& edge)
   {
     heap_[at] = edge;
-    position_[edge.point] = at;
+    position_[edge.point - first_] = at;
   }
   void up(std::uint32_t at)
   {
@@ -117,13 +122,17 @@ private:
     place(at, edge);
   }
 
+  std::size_t first_;
   std::vector<Edge> heap_;
   std::vector<std::uint32_t> position_; // in heap_, of the points listed and not reached
 };
 
 // Orients `normals` (unit, or zero where a point has none) over the graph in
-// which `neighbors(i, visit)` calls visit(j) for the neighbors j of i.
-template <typename Neighbors>
+// which `neighbors(i, visit)` calls visit(j) for the neighbors j of i. The
+// trees grow in blocks of consecutive points, on several threads; the parts
+// they leave are joined after, so that the result does not depend on the
+// number of threads.
+template <typename ConcurrencyTag, typename Neighbors>
 Normal_orientation orient_normals(const std::vector<Eigen::Vector3d>& points, std::vector<Eigen::Vector3f>& normals,
                                   const Neighbors& neighbors)
 {
@@ -135,39 +144,79 @@ Normal_orientation orient_normals(const std::vector<Eigen::Vector3d>& points, st
   std::vector<std::uint32_t>& part = result.part;
   std::vector<float>& confidence = result.confidence;
 
-  // Prim from each point not yet reached, over the edges listed from reached points.
-  Prim_front front(n);
-  std::uint32_t parts = 0;
-  for (std::size_t seed = 0; seed < n; ++seed) {
-    if (part[seed] != Normal_orientation::no_part || !has_normal(seed))
-      continue;
-    front.offer({1.f, std::uint32_t(seed), std::uint32_t(seed)});
-    while (!front.empty()) {
-      const Prim_front::Edge edge = front.pop();
-      const std::uint32_t i = edge.point, from = edge.from;
-      if (normals[i].dot(normals[from]) < 0)
-        normals[i] = -normals[i];
-      part[i] = parts;
-      confidence[i] = (std::min)(edge.agreement, i == from ? 1.f : confidence[from]);
-      neighbors(i, [&](std::uint32_t j) {
-        if (part[j] == Normal_orientation::no_part && has_normal(j))
-          front.offer({normal_agreement(points[i], normals[i], points[j], normals[j]), j, i});
-      });
+  // Prim from each point of a block not yet reached, over the edges within the
+  // block listed from reached points; parts numbered within the block, then in
+  // the order of their first point.
+  constexpr std::size_t block_size = std::size_t(1) << 16;
+  const std::size_t blocks = (n + block_size - 1) / block_size;
+  std::vector<std::uint32_t> first_part(blocks + 1, 0);
+  for_each_index<ConcurrencyTag>(blocks, [&](std::size_t b) {
+    const std::size_t begin = b * block_size, end = (std::min)(n, begin + block_size);
+    Prim_front front(begin, end - begin);
+    std::uint32_t parts = 0;
+    for (std::size_t seed = begin; seed < end; ++seed) {
+      if (part[seed] != Normal_orientation::no_part || !has_normal(seed))
+        continue;
+      front.offer({1.f, std::uint32_t(seed), std::uint32_t(seed)});
+      while (!front.empty()) {
+        const Prim_front::Edge edge = front.pop();
+        const std::uint32_t i = edge.point, from = edge.from;
+        if (normals[i].dot(normals[from]) < 0)
+          normals[i] = -normals[i];
+        part[i] = parts;
+        confidence[i] = (std::min)(edge.agreement, i == from ? 1.f : confidence[from]);
+        neighbors(i, [&](std::uint32_t j) {
+          if (j >= begin && j < end && part[j] == Normal_orientation::no_part && has_normal(j))
+            front.offer({normal_agreement(points[i], normals[i], points[j], normals[j]), j, i});
+        });
+      }
+      ++parts;
     }
-    ++parts;
-  }
-
-  // Parts joined by edges listed from their far side only: by decreasing agreement,
-  // a union-find that keeps each part's flip relative to its root.
-  using Edge = std::tuple<float, std::uint32_t, std::uint32_t>; // agreement, point, neighbor
-  std::vector<Edge> joins;
-  for (std::uint32_t i = 0; i < n; ++i)
+    first_part[b + 1] = parts;
+  });
+  for (std::size_t b = 0; b < blocks; ++b)
+    first_part[b + 1] += first_part[b];
+  const std::uint32_t parts = first_part[blocks];
+  for_each_index<ConcurrencyTag>(n, [&](std::size_t i) {
     if (part[i] != Normal_orientation::no_part)
-      neighbors(i, [&](std::uint32_t j) {
-        if (part[j] != Normal_orientation::no_part && part[j] != part[i])
-          joins.emplace_back(normal_agreement(points[i], normals[i], points[j], normals[j]), i, j);
-      });
-  std::sort(joins.begin(), joins.end(), [](const Edge& a, const Edge& b) { return std::get<0>(a) > std::get<0>(b); });
+      part[i] += first_part[i / block_size];
+  });
+
+  // Parts joined by the edges between blocks and those listed from their far side
+  // only: by decreasing agreement, a union-find that keeps each part's flip
+  // relative to its root. Of the edges between two parts, only the strongest can
+  // join them: each block keeps those.
+  using Edge = std::tuple<float, std::uint32_t, std::uint32_t>; // agreement, point, neighbor
+  const auto stronger = [](const Edge& a, const Edge& b) {
+    return std::make_tuple(-std::get<0>(a), std::get<1>(a), std::get<2>(a)) <
+           std::make_tuple(-std::get<0>(b), std::get<1>(b), std::get<2>(b));
+  };
+  const auto parts_of = [&](const Edge& e) {
+    const std::uint32_t p = part[std::get<1>(e)], q = part[std::get<2>(e)];
+    return std::make_pair((std::min)(p, q), (std::max)(p, q));
+  };
+  std::vector<std::vector<Edge>> block_joins(blocks);
+  for_each_index<ConcurrencyTag>(blocks, [&](std::size_t b) {
+    std::vector<Edge> edges;
+    for (std::size_t i = b * block_size; i < (std::min)(n, (b + 1) * block_size); ++i)
+      if (part[i] != Normal_orientation::no_part)
+        neighbors(i, [&](std::uint32_t j) {
+          if (part[j] != Normal_orientation::no_part && part[j] != part[i])
+            edges.emplace_back(normal_agreement(points[i], normals[i], points[j], normals[j]), std::uint32_t(i), j);
+        });
+    std::sort(edges.begin(), edges.end(), [&](const Edge& a, const Edge& c) {
+      return parts_of(a) != parts_of(c) ? parts_of(a) < parts_of(c) : stronger(a, c);
+    });
+    const auto end =
+      std::unique(edges.begin(), edges.end(), [&](const Edge& a, const Edge& c) { return parts_of(a) == parts_of(c); });
+    block_joins[b].assign(edges.begin(), end);
+  });
+  std::vector<Edge> joins;
+  for (std::vector<Edge>& edges : block_joins) {
+    joins.insert(joins.end(), edges.begin(), edges.end());
+    std::vector<Edge>().swap(edges);
+  }
+  std::sort(joins.begin(), joins.end(), stronger);
   std::vector<std::uint32_t> root(parts);
   std::vector<char> flip(parts, 0); // relative to root[], before compression: to the root
   std::vector<float> join_agreement(parts, 1.f);
@@ -213,13 +262,17 @@ Normal_orientation orient_normals(const std::vector<Eigen::Vector3d>& points, st
       weakest = (std::min)(weakest, join_agreement[k]);
     weakest_join[c] = weakest;
   }
-  for (std::size_t i = 0; i < n; ++i)
+  for_each_index<ConcurrencyTag>(n, [&](std::size_t i) {
     if (part[i] != Normal_orientation::no_part) {
       const std::uint32_t c = part[i];
       if (final_flip[c])
         normals[i] = -normals[i];
       confidence[i] = (std::min)(confidence[i], weakest_join[c]);
       part[i] = final_part[c];
+    }
+  });
+  for (std::size_t i = 0; i < n; ++i)
+    if (part[i] != Normal_orientation::no_part) {
       centroid[part[i]] += points[i];
       count[part[i]] += 1;
     }
@@ -229,7 +282,7 @@ Normal_orientation orient_normals(const std::vector<Eigen::Vector3d>& points, st
       side[part[i]] += s;
       spread[part[i]] += std::abs(s);
     }
-  for (std::size_t i = 0; i < n; ++i)
+  for_each_index<ConcurrencyTag>(n, [&](std::size_t i) {
     if (part[i] != Normal_orientation::no_part) {
       const std::uint32_t c = part[i];
       if (side[c] < 0)
@@ -237,6 +290,7 @@ Normal_orientation orient_normals(const std::vector<Eigen::Vector3d>& points, st
       const double certainty = spread[c] > 0 ? std::abs(side[c]) / spread[c] : 0;
       confidence[i] = (std::min)(confidence[i], float(certainty));
     }
+  });
   return result;
 }
 

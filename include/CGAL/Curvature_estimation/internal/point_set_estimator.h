@@ -149,7 +149,7 @@ Normal_orientation oriented_rings(const Point_set_search& search, std::size_t ne
     boost::make_iterator_range(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(n));
   for_each_vertex<ConcurrencyTag, true>(indices, Worker{Point_set_neighborhood(search, neighbors, radius), &rings, {}},
                                         [](std::size_t, char) {});
-  return orient_normals(search.points(), rings.normals, [&](std::size_t i, const auto& visit) {
+  return orient_normals<ConcurrencyTag>(search.points(), rings.normals, [&](std::size_t i, const auto& visit) {
     for (std::size_t k = 0; k < stride; ++k) {
       const Point_set_search::Index j = rings.neighbors[i * stride + k];
       if (j == Point_set_rings::none)
