@@ -272,8 +272,9 @@ TEST(PointSetScaleSelection, RecognisesCleanSets)
 }
 
 // The target, 1.25 times the best single radius, except on the torus at 15% noise, where it is missed:
-// 1.27 when this test was written (on meshes 1.57, and an oracle of each vertex's exact bias and noise 1.28: the
-// manual, "Choosing the radius per vertex"); the bound of 1.3 there keeps it from getting worse.
+// 1.27 when this test was written (on meshes 1.57, where an oracle that knows the exact curvature and the noise's
+// distribution gets 1.01: the manual, "Choosing the radius per vertex"); the bound of 1.3 there keeps it from getting
+// worse.
 TEST(PointSetScaleSelection, UniformNoiseNearTheBestSingleRadius)
 {
   for (Shape shape : {Shape::ellipsoid, Shape::torus})
@@ -285,7 +286,7 @@ TEST(PointSetScaleSelection, UniformNoiseNearTheBestSingleRadius)
 
 // Where the noise varies from 0 to 15% across the set, the 0.8 times the best single radius holds on the
 // ellipsoid (0.77 when written); on the torus it is missed: 1.14 when written (on meshes the oracle above gets
-// 1.01 there), and the bound of 1.2 keeps it from getting worse.
+// 0.94 there), and the bound of 1.2 keeps it from getting worse.
 TEST(PointSetScaleSelection, VaryingNoiseBelowTheBestSingleRadius)
 {
   for (Shape shape : {Shape::ellipsoid, Shape::torus}) {
