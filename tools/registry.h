@@ -9,9 +9,9 @@
 
 #include "kernel.h"
 
+#include <CGAL/Curvature_estimation/Estimator.h>
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/Vertex_normal_method.h>
-#include <CGAL/Curvature_estimation/neighborhood_reach.h>
 #include <CGAL/tags.h>
 
 #ifdef CGAL_LINKED_WITH_TBB

@@ -3,6 +3,7 @@
 #ifndef CGAL_CURVATURE_ESTIMATION_H
 #define CGAL_CURVATURE_ESTIMATION_H
 
+#include <CGAL/Curvature_estimation/Estimator.h>
 #include <CGAL/Curvature_estimation/Neighbor_weighting.h>
 #include <CGAL/Curvature_estimation/Principal_curvatures_and_directions.h>
 #include <CGAL/Curvature_estimation/Vertex_normal_method.h>
