@@ -93,7 +93,7 @@ ce_test::Estimates<Kernel> estimates(const Estimator& e, const Mesh& mesh, Norma
                                      int threads)
 {
   return ce_test::run_with_all_outputs<Kernel>(
-    mesh, [&](const Mesh& m, const auto& np) { run(e, m, given_normals, h, outputs_of(np), threads); },
+    mesh, [&](const Mesh& m, const auto& np) { run(e, m, given_normals, h, outputs_of(m, np), threads); },
     CE::parameters::default_values());
 }
 
@@ -251,7 +251,7 @@ std::pair<ce_test::Estimates<Kernel>, double> timed_run(const Estimator& e, cons
     mesh,
     [&](const Mesh& m, const auto& np) {
       const auto start = std::chrono::steady_clock::now();
-      run(e, m, Normal_map(), h, outputs_of(np), 1); // no given normals read
+      run(e, m, Normal_map(), h, outputs_of(m, np), 1); // no given normals read
       seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     },
     CE::parameters::default_values());
@@ -413,7 +413,8 @@ Selection run_selection(const Estimator& e, Mesh& mesh, double h)
   Selection s;
   s.mean =
     ce_test::run_with_all_outputs<Kernel>(
-      mesh, [&](const Mesh& m, const auto& np) { ce_tool::run(*e.method, m, settings, outputs_of(np), all_threads); },
+      mesh,
+      [&](const Mesh& m, const auto& np) { ce_tool::run(*e.method, m, settings, outputs_of(m, np), all_threads); },
       CE::parameters::default_values())
       .mean;
   for (vertex_descriptor v : vertices(mesh)) {

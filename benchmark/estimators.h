@@ -214,15 +214,18 @@ inline const std::vector<Ball_estimator>& ball_estimators()
   return all;
 }
 
-/// The output maps of `np` (as ce_test::run_with_all_outputs passes them), for run().
+/// The output maps of `np` (as ce_test::run_with_all_outputs passes them) on `mesh`, for run(); the
+/// reach, which the registry's methods write and run_with_all_outputs does not ask for, into a map
+/// that stays on `mesh`.
 template <typename NamedParameters>
-ce_tool::Outputs outputs_of(const NamedParameters& np)
+ce_tool::Outputs outputs_of(const Mesh& mesh, const NamedParameters& np)
 {
   using CGAL::parameters::get_parameter;
   return {get_parameter(np, CE::internal_np::vertex_mean_curvature_map),
           get_parameter(np, CE::internal_np::vertex_Gaussian_curvature_map),
           get_parameter(np, CE::internal_np::vertex_principal_curvatures_and_directions_map),
-          get_parameter(np, CE::internal_np::vertex_estimation_status_map)};
+          get_parameter(np, CE::internal_np::vertex_estimation_status_map),
+          const_cast<Mesh&>(mesh).add_property_map<vertex_descriptor, double>("v:benchmark_reach").first};
 }
 
 #if CGAL_VERSION_MAJOR >= 6
