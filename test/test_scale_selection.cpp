@@ -82,6 +82,18 @@ TEST(LeastErrorCandidate, WithoutBiasIsTheWidestBall)
   EXPECT_EQ(least.index, candidates.size() - 1);
 }
 
+// Without bias up to 8, then mean curvatures that fall away (a ball outgrowing the
+// surface, as past a torus's tube radius, but below the misfit cut): the bias
+// refitted near the first choice is flat, which says nothing of the wider balls.
+TEST(LeastErrorCandidate, NoneWiderThanWhereItsBiasWasFitted)
+{
+  auto candidates = exact_bias_candidates(0, 2);
+  for (std::size_t k = 13; k < candidates.size(); ++k)
+    candidates[k].mean_curvature -= 0.3 * double(k - 12);
+  const auto least = CE::internal::least_error_candidate(candidates.data(), candidates.size(), 1e-2, 2);
+  EXPECT_LE(candidates[least.index].radius, 8);
+}
+
 TEST(ConsideredCandidates, CleanDataAndOutgrownBalls)
 {
   auto candidates = exact_bias_candidates(1e-2, 2);
@@ -280,29 +292,27 @@ TEST(ScaleSelection, RecognisesCleanMeshes)
   }
 }
 
-// The target, 1.25 times the best single radius, except on the torus at
-// 15% noise, where the rule measured 1.57 when this test was written (an oracle
-// that knows the exact curvature and the noise's distribution gets 1.01 there:
-// benchmark/scale_selection_oracle, the manual); the bound keeps it from getting
-// worse.
+// The target, 1.25 times the best single radius.
 TEST(ScaleSelection, UniformNoiseNearTheBestSingleRadius)
 {
   for (Shape shape : {Shape::ellipsoid, Shape::torus, Shape::delaunay})
     for (double fraction : {0.01, 0.05, 0.15}) {
       const Family_result r = family_result(family_mesh(shape, fraction), 2);
-      EXPECT_LE(r.selected, (shape == Shape::torus && fraction == 0.15 ? 1.6 : 1.25) * r.best_fixed);
+      EXPECT_LE(r.selected, 1.25 * r.best_fixed);
     }
 }
 
-// Where the noise varies from 0 to 15% across the mesh, a choice per vertex beats
-// every single radius on the ellipsoid and the Delaunay mesh. The 0.8 is
-// not reached: the oracle above gets 0.68, 0.94 and 0.90 on the ellipsoid, torus and
-// Delaunay mesh; on the torus the uniform target holds.
+// Where the noise varies from 0 to 15% across the mesh, the 0.8 times the best
+// single radius holds on the ellipsoid, and a choice per vertex beats every single
+// radius on the Delaunay mesh. On the torus and the Delaunay mesh 0.8 is out of reach
+// of an oracle that knows the exact curvature and the noise's distribution (0.94 and
+// 0.90: benchmark/scale_selection_oracle, the manual); on the torus the uniform
+// target holds.
 TEST(ScaleSelection, VaryingNoiseBelowTheBestSingleRadius)
 {
   for (Shape shape : {Shape::ellipsoid, Shape::torus, Shape::delaunay}) {
     const Family_result r = family_result(family_mesh(shape, -1), 2);
-    EXPECT_LE(r.selected, (shape == Shape::torus ? 1.25 : 1.0) * r.best_fixed);
+    EXPECT_LE(r.selected, (shape == Shape::ellipsoid ? 0.8 : shape == Shape::torus ? 1.25 : 1.0) * r.best_fixed);
   }
 }
 

@@ -59,13 +59,15 @@ inline double bias_slope(const Scale_candidate* candidates, std::size_t count, i
 }
 
 // Over candidates[0, count) (count > 0): the least (beta r^order)^2 + noise_variance
-// variance, beta fitted over every candidate, then over those up to twice its radius.
+// variance, beta fitted over every candidate; then, among the candidates up to twice
+// that one's radius, the least with beta fitted over them.
 inline Least_error least_error_candidate(const Scale_candidate* candidates, std::size_t count, double noise_variance,
                                          int order)
 {
-  const auto least_with = [&](double beta) {
+  const auto least_of = [&](std::size_t first_candidates) {
+    const double beta = bias_slope(candidates, first_candidates, order);
     Least_error least{0, std::numeric_limits<double>::infinity()};
-    for (std::size_t k = 0; k < count; ++k) {
+    for (std::size_t k = 0; k < first_candidates; ++k) {
       const double bias = beta * std::pow(candidates[k].radius, order);
       const double error = bias * bias + noise_variance * candidates[k].variance;
       if (error < least.squared_error)
@@ -73,11 +75,11 @@ inline Least_error least_error_candidate(const Scale_candidate* candidates, std:
     }
     return least;
   };
-  const Least_error first = least_with(bias_slope(candidates, count, order));
+  const Least_error first = least_of(count);
   std::size_t window = 0;
   while (window < count && candidates[window].radius <= 2 * candidates[first.index].radius)
     ++window;
-  return least_with(bias_slope(candidates, window >= 2 ? window : (std::min)(count, std::size_t(3)), order));
+  return least_of(window >= 2 ? window : (std::min)(count, std::size_t(3)));
 }
 
 // The number of leading candidates the selection may consider: none where the smallest
