@@ -72,15 +72,9 @@ int main(int argc, char** argv)
       const std::size_t n = family.exact.size();
 
       // The expected squared error at each candidate radius, over other draws of the noise.
-      const ce_test::Soup clean = ce_test::noisy_family_soup(shape, 0).soup;
       std::vector<double> expected(n * candidates, 0);
       for (int s = 0; s < realizations; ++s) {
-        ce_test::Soup draw = clean;
-        std::mt19937 gen(1000 + s);
-        for (std::size_t i = 0; i < n; ++i)
-          for (int c = 0; c < 3; ++c)
-            draw.points[i][c] += family.sigma[i] * ce_test::standard_normal(gen);
-        Mesh drawn = ce_test::to_mesh<Mesh>(draw);
+        Mesh drawn = ce_test::to_mesh<Mesh>(ce_test::noisy_family_soup(shape, fraction, 1000 + s).soup);
         for (int k = 0; k < candidates; ++k) {
           const std::vector<double> H = mean_curvature(drawn, std::exp2(k / 4.0) * edge);
           for (std::size_t i = 0; i < n; ++i)

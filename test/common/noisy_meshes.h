@@ -103,8 +103,9 @@ inline std::vector<double> noisy_family_radii_in_edges()
   return radii;
 }
 
-/// `fraction` of the mean edge length, or where negative, from 0 to 0.15 across x.
-inline Noisy_family_soup noisy_family_soup(Noisy_shape shape, double fraction)
+/// `fraction` of the mean edge length, or where negative, from 0 to 0.15 across x; `seed`
+/// draws the noise (the tests' draw by default).
+inline Noisy_family_soup noisy_family_soup(Noisy_shape shape, double fraction, unsigned seed = 11)
 {
   Noisy_family_soup m;
   const auto functions = hamann_table1_functions();
@@ -131,7 +132,7 @@ inline Noisy_family_soup noisy_family_soup(Noisy_shape shape, double fraction)
     lo = (std::min)(lo, p.x());
     hi = (std::max)(hi, p.x());
   }
-  std::mt19937 gen(11);
+  std::mt19937 gen(seed);
   for (auto& p : m.soup.points) {
     const double f = fraction >= 0 ? fraction : 0.15 * (p.x() - lo) / (hi - lo);
     m.sigma.push_back(f * h);
